@@ -1,0 +1,64 @@
+"""gearlib: the library behind the open textbook on geared mechanisms.
+
+Use it as ``import gearlib as gl``. Mechanisms are validated, immutable data
+(:class:`Mechanism`, loadable with :func:`load` or from :mod:`gearlib.catalog`); analyses
+are functions of a mechanism (:func:`speeds`, :func:`ratio`, :func:`dof`, ...); drawings are
+in :mod:`gearlib.plot` and take ``ax=``; exercise checks live in :mod:`gearlib.check`.
+
+Importing gearlib changes no global state (matplotlib settings, numpy print options,
+random generators).
+
+>>> import gearlib as gl
+>>> m = gl.catalog.simple_planetary(sun=24, ring=60)
+>>> gl.ratio(m, output=4, input=1, ground=3)
+Fraction(2, 7)
+"""
+
+from . import catalog, check, plot, widgets
+from .display import number
+from .generate import random_mechanism, serial_train
+from .adjacency import adjacency_matrix, link_table, null_space, speed_ratio_matrix
+from .equations import WillisEquation, omega, ratio_symbols, willis_equations, willis_matrix
+from .errors import (
+    AxisError,
+    CarrierError,
+    ConstraintError,
+    DataFormatError,
+    DisconnectedError,
+    DuplicateEdgeError,
+    FileFormatError,
+    GearlibError,
+    InputError,
+    MechanismError,
+    OverconstrainedError,
+    SelfMeshError,
+    ToothNumberError,
+    UnknownLinkError,
+)
+from .graph import FundamentalCircuit, displacement_graph, fundamental_circuits, to_networkx
+from .io import load, loads, save
+from .kinematics import Constraints, Solution, ratio, speeds
+from .mechanism import Bearing, GearPair, Link, Mechanism, TurningPair
+from .mobility import Mobility, dof
+from .plot import draw_graph, plot_speeds
+
+__version__ = "0.1.0"
+
+__all__ = [
+    # data
+    "Mechanism", "Link", "TurningPair", "GearPair", "Bearing", "load", "loads", "save", "catalog", "check",
+    # graph and equations (chapter 1)
+    "to_networkx", "fundamental_circuits", "FundamentalCircuit", "displacement_graph",
+    "willis_equations", "willis_matrix", "WillisEquation", "omega", "ratio_symbols",
+    "dof", "Mobility", "speeds", "ratio", "Solution", "Constraints",
+    # Penaud and Alazard's matrix (chapters 1 and 4)
+    "link_table", "adjacency_matrix", "null_space", "speed_ratio_matrix",
+    # drawing
+    "plot", "widgets", "draw_graph", "plot_speeds", "number",
+    # random and large mechanisms (tests, benchmarks)
+    "random_mechanism", "serial_train",
+    # errors
+    "GearlibError", "MechanismError", "DataFormatError", "UnknownLinkError", "DuplicateEdgeError",
+    "SelfMeshError", "ToothNumberError", "CarrierError", "AxisError", "DisconnectedError",
+    "OverconstrainedError", "ConstraintError", "InputError", "FileFormatError",
+]

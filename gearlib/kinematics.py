@@ -1,0 +1,562 @@
+"""Every link's angular velocity, and speed ratios, from the Willis equations.
+
+Unknowns are the speeds ``omega_u`` of all links, with the ground at zero. Equations are
+the Willis equations of the gear pairs (:mod:`gearlib.equations`), plus one row per
+constraint: the ground, held links (brakes), joined links (clutches), and inputs. Four
+methods solve the same system and must agree:
+
+``"exact"``
+    sparse elimination in exact arithmetic: :class:`fractions.Fraction` for tooth
+    numbers, algebraic numbers for Penaud's complex weights;
+``"symbolic"``
+    every numeric gear ratio replaced by its symbol ``e_a_b``: the result is a rational
+    function of the ratios (and of symbolic inputs);
+``"nullspace"``
+    Penaud and Alazard's method: the null space of the complex-weighted adjacency matrix
+    with the constraint rows, normalised to the inputs (:mod:`gearlib.adjacency`);
+``"numeric"``
+    one dense LU solve in floating point, the fast path for large mechanisms.
+
+For planar trains ``omega_u`` is the angular velocity of ``u``. For spatial (bevel)
+trains it is Tsai's scalar along each link's own axis: differences are physical
+angular velocities only between coaxial links (``Mechanism.coaxial``), and Penaud's
+complex values carry the direction in the plane of the axes. Derived in chapter 1.
+
+>>> import gearlib as gl
+>>> m = gl.catalog.simple_planetary(sun=24, ring=60)
+>>> gl.ratio(m, output=4, input=1, ground=3)    # carrier over sun, ring held
+Fraction(2, 7)
+>>> sol = gl.speeds(m, ground=3, inputs={1: 70})
+>>> sol[4], sol[2]
+(Fraction(20, 1), Fraction(-140, 3))
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import numpy as np
+import sympy
+
+from . import _linalg
+from ._parse import parse_expr, to_fraction
+from .equations import omega
+from .errors import ConstraintError, DataFormatError, InputError
+from .mechanism import Mechanism
+
+__all__ = ["Solution", "speeds", "ratio", "METHODS", "Constraints"]
+
+METHODS = ("exact", "symbolic", "nullspace", "numeric")
+
+
+# ---------------------------------------------------------------------------- constraints
+@dataclass(frozen=True)
+class Constraints:
+    """Ground, held links, joined links and inputs, resolved to column indices.
+
+    ``inputs`` holds ``(u, v, value)``: the speed of link ``u`` relative to link ``v``.
+    """
+
+    mechanism: Mechanism
+    ground: object
+    held: tuple = ()
+    joined: tuple = ()
+    inputs: tuple = ()
+
+    @classmethod
+    def build(cls, mech, ground, inputs, held=(), joined=(), *, symbolic_inputs=False) -> Constraints:
+        if ground is None:
+            ground = mech.ground
+        if ground is None:
+            raise InputError(f"choose a ground link for {mech.name!r} (ground=...); links are {list(mech.link_ids)}")
+        ground = mech.resolve(ground, "ground")
+        held = tuple(mech.resolve(h, "held link") for h in (held or ()))
+        for h in held:
+            if h == ground:
+                raise ConstraintError(f"link {h} is the ground and also held; the ground is already fixed")
+        joined_out = []
+        for pair in joined or ():
+            if isinstance(pair, (str, bytes)) or not isinstance(pair, Sequence) or len(pair) != 2:
+                raise DataFormatError(f"joined links must be pairs (u, v), got {pair!r}")
+            u, v = (mech.resolve(x, "joined link") for x in pair)
+            if u == v:
+                raise ConstraintError(f"joined pair ({u}, {v}) joins a link to itself")
+            joined_out.append((u, v))
+        items = cls._input_items(mech, inputs)
+        out = []
+        seen = set()
+        for key, value in items:
+            u, v = cls._input_key(mech, key, ground)
+            where = f"input {u}" if v == ground else f"input {u}/{v}"
+            if u == ground and v == ground:
+                raise InputError(f"{where}: link {u} is the ground; its speed is 0. Give inputs to other links")
+            if u == v:
+                raise InputError(f"{where}: a link cannot be driven relative to itself")
+            if v == ground and u in held:
+                raise ConstraintError(f"{where}: link {u} is held (speed 0) and also driven; drop one of them")
+            if (u, v) in seen or (v, u) in seen:
+                raise InputError(f"{where} is given twice")
+            seen.add((u, v))
+            if value is None:
+                if not symbolic_inputs:
+                    raise InputError(f"{where}: give its speed, e.g. inputs={{{u!r}: 1}}")
+                value = omega(u) if v == ground else omega(u, v)
+            else:
+                value = parse_expr(value, where)
+            out.append((u, v, value))
+        return cls(mech, ground, held, tuple(joined_out), tuple(out))
+
+    @staticmethod
+    def _input_items(mech, inputs):
+        if inputs is None:
+            inputs = mech.inputs
+        if isinstance(inputs, Mapping):
+            return list(inputs.items())
+        if isinstance(inputs, (str, bytes, int)):
+            return [(inputs, None)]
+        if isinstance(inputs, Sequence):
+            return [(k, None) for k in inputs]
+        raise DataFormatError(f"inputs must be a mapping link -> speed (or a list of links), got {inputs!r}")
+
+    @staticmethod
+    def _input_key(mech, key, ground):
+        if isinstance(key, str) and "/" in key:
+            u, v = key.split("/", 1)
+        elif isinstance(key, tuple) and len(key) == 2:
+            u, v = key
+        else:
+            u, v = key, ground
+        return mech.resolve(u, "input link"), mech.resolve(v, "input reference link")
+
+    def rows(self):
+        """Constraint rows ``(dict, rhs, tag)``: ground, held, joined, then inputs."""
+        ix = self.mechanism.index
+        yield {ix[self.ground]: 1}, 0, ("ground", self.ground)
+        for h in self.held:
+            yield {ix[h]: 1}, 0, ("held", h)
+        for u, v in self.joined:
+            yield {ix[u]: 1, ix[v]: -1}, 0, ("joined", (u, v))
+        for u, v, value in self.inputs:
+            row = {ix[u]: 1}
+            if v != self.ground:
+                row[ix[v]] = -1
+            yield row, value, ("input", (u, v))
+
+    def describe_input(self, u, v) -> str:
+        return f"{u}" if v == self.ground else f"{u}/{v}"
+
+
+def _gear_rows(mech: Mechanism, ratio_of):
+    ix = mech.index
+    for gp in mech.gear_pairs:
+        a, b = gp.gears
+        e = ratio_of(gp)
+        row = {ix[b]: 1}
+        row[ix[a]] = row.get(ix[a], 0) - e
+        row[ix[gp.carrier]] = row.get(ix[gp.carrier], 0) + (e - 1)
+        yield row, 0, ("gear", gp)
+
+
+# ---------------------------------------------------------------------------- solution
+@dataclass(frozen=True)
+class Solution:
+    """Every link's speed (relative to the ground) for one set of inputs.
+
+    Index it with a link id: ``sol[3]``. Values are :class:`fractions.Fraction` or sympy
+    expressions (methods ``"exact"``, ``"symbolic"``) or Python numbers (``"nullspace"``,
+    ``"numeric"``).
+    """
+
+    mechanism: Mechanism
+    constraints: Constraints
+    values: tuple
+    method: str
+    dof: int
+    notes: tuple = field(default=(), compare=False)
+
+    def __getitem__(self, link):
+        return self.values[self.mechanism.index[self.mechanism.resolve(link)]]
+
+    def __iter__(self):
+        return iter(self.mechanism.link_ids)
+
+    def items(self):
+        return zip(self.mechanism.link_ids, self.values)
+
+    def relative(self, u, v):
+        """Speed of link *u* relative to link *v*, ``omega_u - omega_v``."""
+        return _sub(self[u], self[v])
+
+    def ratio(self, output, input, relative_to=None):
+        """``omega(output/ref) / omega(input/ref)``, *ref* the ground unless given."""
+        ref = self.constraints.ground if relative_to is None else relative_to
+        num, den = self.relative(output, ref), self.relative(input, ref)
+        if _is_zero(den):
+            raise ConstraintError(f"link {input} does not move relative to {ref} in this solution; no ratio")
+        return _div(num, den)
+
+    def as_complex(self) -> np.ndarray:
+        """All speeds as a complex numpy array (in ``mechanism.link_ids`` order)."""
+        return np.array([_to_complex(v) for v in self.values], dtype=complex)
+
+    def to_json(self) -> dict:
+        """``{"dof": int, "speeds": {"3": [re, im], ...}}``, the command line's ``--json`` form."""
+        z = self.as_complex()
+        return {"dof": self.dof, "speeds": {str(k): [float(v.real), float(v.imag)] for k, v in zip(self, z)}}
+
+    def table(self, digits: int = 6) -> list[tuple]:
+        """Rows ``(link, name, value as text)``."""
+        out = []
+        for lk, v in zip(self.mechanism.links, self.values):
+            out.append((lk.id, lk.name or "", format_value(v, digits)))
+        return out
+
+    def __str__(self) -> str:
+        rows = self.table()
+        w = max(len(str(r[0])) for r in rows)
+        n = max(len(r[1]) for r in rows)
+        head = f"speeds of {self.mechanism.name!r} (ground {self.constraints.ground}, method {self.method})"
+        return "\n".join([head] + [f"  {str(i):>{w}}  {name:<{n}}  {val}" for i, name, val in rows])
+
+    def _repr_html_(self) -> str:
+        rows = "".join(
+            f"<tr><td>{i}</td><td>{name}</td><td style='text-align:right'>{val}</td></tr>" for i, name, val in self.table()
+        )
+        return (
+            f"<table><caption>Speeds relative to link {self.constraints.ground} ({self.method})</caption>"
+            f"<tr><th>link</th><th>name</th><th>&omega;</th></tr>{rows}</table>"
+        )
+
+    def plot(self, ax=None, **kwargs):
+        """Bar chart of the speeds, see :func:`gearlib.plot.speeds`."""
+        from .plot import plot_speeds
+
+        return plot_speeds(self, ax=ax, **kwargs)
+
+
+def format_value(v, digits: int = 6) -> str:
+    """A speed or ratio as short text: fractions exactly, floats rounded, complex in polar form."""
+    if isinstance(v, Fraction):
+        return str(v)
+    if isinstance(v, sympy.Basic):
+        if v.free_symbols:
+            return str(v)
+        if v.is_Rational:
+            return str(v)
+        v = complex(v.evalf(30))
+    z = complex(v)
+    if abs(z.imag) <= 1e-12 * max(1.0, abs(z)):
+        return f"{z.real:.{digits}g}"
+    return f"{abs(z):.{digits}g}∠{np.angle(z):.{digits}g}"
+
+
+def _to_complex(v) -> complex:
+    if isinstance(v, sympy.Basic):
+        if v.free_symbols:
+            raise ConstraintError(f"value {v} is symbolic; substitute numbers first")
+        return complex(v.evalf(30))
+    return complex(v)
+
+
+def _is_zero(v) -> bool:
+    if isinstance(v, sympy.Basic):
+        return sympy.simplify(v) == 0
+    if isinstance(v, Fraction):
+        return v == 0
+    return abs(v) < 1e-300
+
+
+def _sub(a, b):
+    if isinstance(a, sympy.Basic) or isinstance(b, sympy.Basic):
+        return sympy.cancel(sympy.sympify(a) - sympy.sympify(b))
+    return a - b
+
+
+def _div(a, b):
+    if isinstance(a, sympy.Basic) or isinstance(b, sympy.Basic):
+        return sympy.factor(sympy.cancel(sympy.sympify(a) / sympy.sympify(b)))
+    return a / b
+
+
+# ---------------------------------------------------------------------------- solvers
+def _count_message(mech, cons: Constraints, dof: int) -> str:
+    extra = ""
+    if cons.held or cons.joined:
+        extra = " with the held and joined links given"
+    return (
+        f"{mech.name!r} has {dof} degree{'s' if dof != 1 else ''} of freedom with link {cons.ground} "
+        f"grounded{extra}, so it needs {dof} input{'s' if dof != 1 else ''}; got {len(cons.inputs)}"
+        + (f" ({', '.join(cons.describe_input(u, v) for u, v, _ in cons.inputs)})" if cons.inputs else "")
+    )
+
+
+def _tag_text(tag) -> str:
+    kind, what = tag
+    if kind == "gear":
+        return f"gear pair {what.label}"
+    if kind == "input":
+        u, v = what
+        return f"input {u}" if v is None else f"input {u}/{v}"
+    return f"{kind} {what}"
+
+
+def _solve_echelon(mech, cons: Constraints, field, gear_rows, m) -> tuple[list, int]:
+    gear_rows = list(gear_rows)
+    cons_rows = list(cons.rows())
+    weight: dict = {}
+    for row, _, _ in gear_rows + cons_rows:
+        for c in row:
+            weight[c] = weight.get(c, 0) + 1
+    ech = _linalg.Echelon(field, weight)
+    for row, rhs, tag in gear_rows:
+        ech.add(row, rhs, tag)
+    inputs = []
+    for row, rhs, tag in cons_rows:
+        if tag[0] == "input":
+            inputs.append((row, rhs, tag))
+        else:
+            ech.add(row, rhs, tag)
+            if ech.inconsistent:
+                raise ConstraintError(f"{_tag_text(tag)} contradicts the other constraints")
+    dof = m - ech.rank
+    if len(inputs) != dof:
+        raise InputError(_count_message(mech, cons, dof))
+    for row, rhs, tag in inputs:
+        if not ech.add(row, rhs, tag):
+            u, v = tag[1]
+            text = cons.describe_input(u, v)
+            raise InputError(
+                f"input {text} is not independent of the other inputs and constraints: its speed is already "
+                f"fixed by them. Choose another input link (the mechanism has {dof} degrees of freedom "
+                f"with link {cons.ground} grounded)"
+            )
+    return ech.solve(m), dof
+
+
+def _exact(mech, cons: Constraints) -> tuple[list, int]:
+    m = len(mech.links)
+    fracs = {id(gp): to_fraction(gp.e) for gp in mech.gear_pairs}
+    values = [to_fraction(v) for _, _, v in cons.inputs]
+    if all(f is not None for f in fracs.values()) and all(v is not None for v in values):
+        cons_f = Constraints(cons.mechanism, cons.ground, cons.held, cons.joined,
+                             tuple((u, v, f) for (u, v, _), f in zip(cons.inputs, values)))
+        x, dof = _solve_echelon(mech, cons_f, _linalg.FRACTIONS, _gear_rows(mech, lambda gp: fracs[id(gp)]), m)
+        return x, dof
+    return _domain_solve(mech, cons, lambda gp: gp.e, m)
+
+
+def _domain_solve(mech, cons, ratio_of, m):
+    ratios = [ratio_of(gp) for gp in mech.gear_pairs]
+    values = [v for _, _, v in cons.inputs]
+    field, elems = _linalg.domain_for(ratios + values)
+    conv = dict(zip(range(len(ratios)), elems[: len(ratios)]))
+    pos = {id(gp): i for i, gp in enumerate(mech.gear_pairs)}
+    cons_d = Constraints(cons.mechanism, cons.ground, cons.held, cons.joined,
+                         tuple((u, v, val) for (u, v, _), val in zip(cons.inputs, elems[len(ratios):])))
+    x, dof = _solve_echelon(mech, cons_d, field, _gear_rows(mech, lambda gp: conv[pos[id(gp)]]), m)
+    return [sympy.cancel(field.to_sympy(v)) for v in x], dof
+
+
+def _symbolic(mech, cons):
+    """Ratios as symbols. Gear pairs whose equation is implied by the others for the actual
+    ratios (a duplicate planet) are left out: with free symbols they would wrongly lock."""
+    from .mobility import redundant_gear_pairs
+
+    m = len(mech.links)
+    redundant = {id(gp) for gp in redundant_gear_pairs(mech)}
+    if redundant:
+        kept = tuple(gp for gp in mech.gear_pairs if id(gp) not in redundant)
+        mech = _without_pairs(mech, kept)
+        cons = Constraints(mech, cons.ground, cons.held, cons.joined, cons.inputs)
+    return _domain_solve(mech, cons, lambda gp: gp.symbol if not gp.e.free_symbols else gp.e, m)
+
+
+def _without_pairs(mech, kept):
+    """The same mechanism with only the gear pairs *kept* (no re-validation needed: removing
+    a redundant pair keeps every carrier and the connectivity)."""
+    import copy
+
+    new = copy.copy(mech)
+    object.__setattr__(new, "gear_pairs", kept)
+    new.__dict__.pop("index", None)
+    return new
+
+
+def _numeric_matrix(mech, cons):
+    """Dense ``A x = b`` in floating point (complex when a ratio is complex)."""
+    m = len(mech.links)
+    ratios = [gp.e_value for gp in mech.gear_pairs]
+    vals = [_to_complex(v) for _, _, v in cons.inputs]
+    is_complex = any(r.imag != 0 for r in ratios) or any(v.imag != 0 for v in vals)
+    dtype = complex if is_complex else float
+    rows = list(cons.rows())
+    n_rows = len(ratios) + len(rows)
+    A = np.zeros((n_rows, m), dtype=dtype)
+    b = np.zeros(n_rows, dtype=dtype)
+    ix = mech.index
+    if ratios:
+        ia = np.fromiter((ix[gp.gears[0]] for gp in mech.gear_pairs), int, len(ratios))
+        ib = np.fromiter((ix[gp.gears[1]] for gp in mech.gear_pairs), int, len(ratios))
+        ic = np.fromiter((ix[gp.carrier] for gp in mech.gear_pairs), int, len(ratios))
+        e = np.array(ratios if is_complex else [r.real for r in ratios], dtype=dtype)
+        r = np.arange(len(ratios))
+        np.add.at(A, (r, ib), 1)
+        np.add.at(A, (r, ia), -e)
+        np.add.at(A, (r, ic), e - 1)
+    k = len(ratios)
+    vi = iter(vals)
+    for i, (row, _rhs, tag) in enumerate(rows):
+        for c, v in row.items():
+            A[k + i, c] += v
+        if tag[0] == "input":
+            val = next(vi)
+            b[k + i] = val if is_complex else val.real
+    return A, b
+
+
+def _numeric(mech, cons):
+    import scipy.linalg
+
+    A, b = _numeric_matrix(mech, cons)
+    if A.shape[0] == A.shape[1]:
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("error", scipy.linalg.LinAlgWarning)
+                x = scipy.linalg.solve(A, b, check_finite=False)
+            return _clean(x), len(cons.inputs)
+        except (np.linalg.LinAlgError, scipy.linalg.LinAlgWarning):
+            pass
+    # not square, or singular: find the rank properly (and explain, if the inputs are wrong)
+    return _nullspace(mech, cons)
+
+
+def _nullspace(mech, cons):
+    from .adjacency import adjacency_matrix, null_space
+
+    M = adjacency_matrix(mech)
+    rows = [r for r in cons.rows() if r[2][0] != "input"]
+    m = len(mech.links)
+    C = np.zeros((len(rows), m))
+    for i, (row, _, _) in enumerate(rows):
+        for c, v in row.items():
+            C[i, c] = v
+    K = null_space(np.vstack([M, C]) if M.size else C)
+    dof = K.shape[1]
+    if len(cons.inputs) != dof:
+        raise InputError(_count_message(mech, cons, dof))
+    if dof == 0:
+        return [0.0] * m, 0
+    ix = mech.index
+    R = np.zeros((dof, dof), dtype=K.dtype)
+    vals = np.zeros(dof, dtype=complex)
+    for i, (u, v, value) in enumerate(cons.inputs):
+        R[i] = K[ix[u]] - (K[ix[v]] if v != cons.ground else 0)
+        vals[i] = _to_complex(value)
+    s = np.linalg.svd(R, compute_uv=False)
+    if s[-1] <= 1e-10 * max(1.0, s[0]):
+        names = ", ".join(cons.describe_input(u, v) for u, v, _ in cons.inputs)
+        raise InputError(
+            f"inputs {names} are not independent: together they fix fewer than {dof} freedoms. "
+            "Choose other input links"
+        )
+    return _clean(K @ np.linalg.solve(R, vals)), dof
+
+
+def _clean(x) -> list:
+    """Floating-point speeds as Python numbers: round-off below 1e-12 of the largest speed
+    becomes 0, and complex values with no imaginary part become floats."""
+    x = np.asarray(x, dtype=complex)
+    scale = 1e-12 * max(1.0, float(np.abs(x).max(initial=0.0)))
+    x.real[np.abs(x.real) < scale] = 0.0
+    x.imag[np.abs(x.imag) < scale] = 0.0
+    return [complex(z) if z.imag != 0 else float(z.real) for z in x]
+
+
+_SOLVERS = {"exact": _exact, "symbolic": _symbolic, "nullspace": _nullspace, "numeric": _numeric}
+
+
+def speeds(mech: Mechanism, ground=None, inputs=None, *, method: str = "exact", held=(), joined=()) -> Solution:
+    """Every link's speed relative to the ground, for given input speeds.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    ground : link id, optional
+        The link held fixed (speed 0). Defaults to ``mech.ground``.
+    inputs : mapping, optional
+        ``{link: speed}``; a key ``"u/v"`` or ``(u, v)`` drives *u* relative to *v*. Give
+        as many inputs as the mechanism has degrees of freedom. With ``method="symbolic"``
+        a list of links gives symbolic speeds ``omega_u``.
+    method : {"exact", "symbolic", "nullspace", "numeric"}
+        See the module documentation. All four give the same speeds.
+    held : links fixed to the ground as well (brakes).
+    joined : pairs of links made to turn together (clutches).
+
+    Returns
+    -------
+    Solution
+
+    Raises
+    ------
+    InputError
+        Wrong number of inputs (the message says how many are needed), an input on the
+        ground, or inputs that are not independent.
+    ConstraintError
+        Held or joined links that contradict each other.
+
+    Examples
+    --------
+    >>> import gearlib as gl
+    >>> diff = gl.catalog.car_differential()
+    >>> sol = gl.speeds(diff, ground=1, inputs={3: 26, 4: 30})
+    >>> sol[7], sol[2]
+    (Fraction(28, 1), Fraction(-140, 1))
+    >>> gl.speeds(diff, ground=1, inputs={3: 26})
+    Traceback (most recent call last):
+    ...
+    gearlib.errors.InputError: 'car differential' has 2 degrees of freedom with link 1 grounded, so it needs 2 inputs; got 1 (3)
+    """
+    if method not in _SOLVERS:
+        raise DataFormatError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
+    cons = Constraints.build(mech, ground, inputs, held, joined, symbolic_inputs=(method == "symbolic"))
+    values, dof = _SOLVERS[method](mech, cons)
+    if method == "exact" and values and isinstance(values[0], sympy.Basic):
+        values = [v if to_fraction(v) is None else to_fraction(v) for v in values]
+    return Solution(mech, cons, tuple(values), method, dof)
+
+
+def ratio(mech: Mechanism, output, input, *, ground=None, relative_to=None, method: str = "exact",
+          held=(), joined=()):
+    """The speed ratio ``omega(output/ref) / omega(input/ref)`` of a one-dof mechanism.
+
+    *ref* is ``relative_to``, or the ground. *output* and *input* may also be pairs
+    ``(u, v)`` (or text ``"u/v"``) for relative speeds, as in Liu and Chen's
+    ``theta_{8,1} / theta_{4,1}``. With ``method="symbolic"`` the result is an expression in
+    the gear-ratio symbols ``e_a_b``.
+
+    >>> import gearlib as gl
+    >>> fig1 = gl.catalog.load("liu_chen_fig1")
+    >>> gl.ratio(fig1, output=3, input=4, ground=5, method="symbolic")
+    -e_4_1/(e_2_1*e_5_2 - 1)
+    """
+    if ground is None:
+        ground = mech.ground
+    ref = ground if relative_to is None else relative_to
+
+    def split(x):
+        if isinstance(x, str) and "/" in x:
+            return tuple(x.split("/", 1))
+        if isinstance(x, tuple) and len(x) == 2:
+            return x
+        return (x, ref)
+
+    inp = split(input)
+    out = split(output)
+    sol = speeds(mech, ground, {inp: 1}, method=method, held=held, joined=joined)
+    value = sol.relative(*out)
+    if method == "symbolic":
+        return sympy.factor(value)
+    return value

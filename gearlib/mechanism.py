@@ -1,0 +1,727 @@
+"""Geared mechanisms as validated, immutable data.
+
+A mechanism is described in the vocabulary of the papers (Freudenstein, Tsai, Liu and
+Chen, Penaud and Alazard):
+
+* **links** are the vertices of the graph; an id is an integer or a short name;
+* **turning pairs** (thin edges) ``[link, link, axis_label]``: links joined by a revolute
+  joint; two links are *coaxial* when a path of turning pairs with one axis label joins them;
+* **gear pairs** (heavy edges) with tooth numbers or a gear ratio, and a **carrier** (the
+  transfer vertex): the link that holds both gear axes. When the carrier is left out it is
+  found from the turning pairs (:meth:`Mechanism.carrier_candidates`).
+
+The gear ratio of pair ``(a, b)`` is ``e_{a,b} = omega(b/c) / omega(a/c)`` where ``c`` is the
+carrier and ``omega(u/v)`` the angular velocity of ``u`` relative to ``v``: ``-N_a/N_b`` for an
+external spur mesh, ``+N_a/N_b`` for an internal one; for bevel gears it is complex (Penaud's
+angles) or given with the sign fixed by the chosen axis directions.
+
+Every check runs when the object is built, so a :class:`Mechanism` that exists is valid.
+
+>>> import gearlib as gl
+>>> m = gl.Mechanism.from_dict({
+...     "name": "simple planetary",
+...     "links": {1: "sun", 2: "planet", 3: "ring", 4: "carrier", 5: "frame"},
+...     "turning_pairs": [[5, 1, "a"], [5, 3, "a"], [5, 4, "a"], [4, 2, "b"]],
+...     "gear_pairs": [{"gears": [1, 2], "teeth": [24, 18]},
+...                    {"gears": [2, 3], "teeth": [18, 60], "type": "internal"}]})
+>>> [p.carrier for p in m.gear_pairs]
+[4, 4]
+>>> m.gear_pairs[1].e
+3/10
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import numbers
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import sympy
+
+from ._parse import expr_to_data, parse_expr, parse_link_id, parse_positive, parse_teeth
+from ._topology import CoaxialGroups, UnionFind, components
+from .errors import (
+    AxisError,
+    CarrierError,
+    DataFormatError,
+    DisconnectedError,
+    DuplicateEdgeError,
+    OverconstrainedError,
+    SelfMeshError,
+    UnknownLinkError,
+)
+
+__all__ = ["Link", "Bearing", "TurningPair", "GearPair", "Mechanism", "GEAR_KINDS"]
+
+GEAR_KINDS = ("external", "internal", "bevel")
+
+
+def _fmt(ids) -> str:
+    return ", ".join(str(i) for i in ids)
+
+
+def _check_keys(data: Mapping, allowed: Sequence[str], where: str) -> None:
+    unknown = [k for k in data if k not in allowed]
+    if unknown:
+        raise DataFormatError(
+            f"{where}: unknown field {unknown[0]!r}; known fields are {', '.join(allowed)}"
+        )
+
+
+def _pair_of(value, where: str, what: str) -> tuple:
+    if isinstance(value, (str, bytes)) or not isinstance(value, Sequence) or len(value) != 2:
+        raise DataFormatError(f"{where}: `{what}` must be a list of two values, got {value!r}")
+    return tuple(value)
+
+
+@dataclass(frozen=True)
+class Link:
+    """A link (vertex): an id and an optional name such as ``"sun"`` or ``"carrier"``."""
+
+    id: int | str
+    name: str | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "id", parse_link_id(self.id, "link"))
+        if self.name is not None and not isinstance(self.name, str):
+            object.__setattr__(self, "name", str(self.name))
+
+    @property
+    def label(self) -> str:
+        """``"3 (planet)"``, or just ``"3"`` without a name."""
+        return f"{self.id} ({self.name})" if self.name else str(self.id)
+
+
+@dataclass(frozen=True)
+class Bearing:
+    """Geometry of a rolling bearing inside a turning pair (Penaud and Alazard, Fig. 1-2).
+
+    Parameters
+    ----------
+    pitch_diameter : float
+        Mean (pitch) diameter ``D_m`` of the rolling elements' centres.
+    ball_diameter : float
+        Diameter ``d_b`` of a ball or roller, same unit as ``pitch_diameter``.
+    balls : int
+        Number ``Z`` of rolling elements.
+    contact_angle : expression, optional
+        Contact angle ``alpha`` in radians (``"15*deg"`` reads as 15 degrees). Default 0.
+    inner : link id, optional
+        The link that carries the inner ring; the other link of the pair carries the outer ring.
+    name : str, optional
+    """
+
+    pitch_diameter: float
+    ball_diameter: float
+    balls: int
+    contact_angle: sympy.Expr = sympy.Integer(0)
+    inner: int | str | None = None
+    name: str | None = None
+
+    def __post_init__(self):
+        where = f"bearing {self.name}" if self.name else "bearing"
+        object.__setattr__(self, "pitch_diameter", parse_positive(self.pitch_diameter, where + " pitch_diameter"))
+        object.__setattr__(self, "ball_diameter", parse_positive(self.ball_diameter, where + " ball_diameter"))
+        if self.ball_diameter >= self.pitch_diameter:
+            raise DataFormatError(
+                f"{where}: ball_diameter {self.ball_diameter} must be smaller than pitch_diameter "
+                f"{self.pitch_diameter}"
+            )
+        object.__setattr__(self, "balls", parse_teeth(self.balls, where + " balls"))
+        angle = parse_expr(self.contact_angle, where + " contact_angle")
+        if angle.free_symbols or not (0 <= float(angle) < float(sympy.pi / 2)):
+            raise DataFormatError(f"{where}: contact_angle must be a number in [0, pi/2) radians, got {angle}")
+        object.__setattr__(self, "contact_angle", angle)
+        if self.inner is not None:
+            object.__setattr__(self, "inner", parse_link_id(self.inner, where + " inner"))
+
+    @classmethod
+    def from_dict(cls, data: Mapping, where: str = "bearing") -> Bearing:
+        if not isinstance(data, Mapping):
+            raise DataFormatError(f"{where}: a bearing must be a mapping, got {data!r}")
+        fields = ("pitch_diameter", "ball_diameter", "balls", "contact_angle", "inner", "name")
+        _check_keys(data, fields, where)
+        missing = [f for f in fields[:3] if f not in data]
+        if missing:
+            raise DataFormatError(f"{where}: missing field {missing[0]!r}")
+        return cls(**dict(data))
+
+    def to_dict(self) -> dict:
+        out = {"pitch_diameter": self.pitch_diameter, "ball_diameter": self.ball_diameter, "balls": self.balls}
+        if self.contact_angle != 0:
+            out["contact_angle"] = expr_to_data(self.contact_angle)
+        if self.inner is not None:
+            out["inner"] = self.inner
+        if self.name:
+            out["name"] = self.name
+        return out
+
+
+@dataclass(frozen=True)
+class TurningPair:
+    """A turning pair (thin edge) joining two links about the axis with the given label."""
+
+    links: tuple
+    axis: str
+    bearings: tuple[Bearing, ...] = ()
+
+    def __post_init__(self):
+        a, b = _pair_of(self.links, "turning pair", "links")
+        where = f"turning pair ({a}, {b})"
+        a, b = parse_link_id(a, where), parse_link_id(b, where)
+        object.__setattr__(self, "links", (a, b))
+        if a == b:
+            raise SelfMeshError(f"{where} joins link {a} to itself; a turning pair joins two different links")
+        if isinstance(self.axis, bool) or not isinstance(self.axis, (str, numbers.Integral)) or str(self.axis) == "":
+            raise DataFormatError(f"{where}: axis label must be a short text such as 'a', got {self.axis!r}")
+        object.__setattr__(self, "axis", str(self.axis))
+        bearings = tuple(
+            b if isinstance(b, Bearing) else Bearing.from_dict(b, f"{where} bearing {i + 1}")
+            for i, b in enumerate(self.bearings or ())
+        )
+        for brg in bearings:
+            if brg.inner is not None and brg.inner not in (a, b):
+                raise UnknownLinkError(f"{where}: bearing inner ring on link {brg.inner}, which is not {a} or {b}")
+        object.__setattr__(self, "bearings", bearings)
+
+    @classmethod
+    def from_data(cls, data, where: str = "turning pair") -> TurningPair:
+        """From ``[a, b, label]`` or ``{"links": [a, b], "axis": label, "bearings": [...]}``."""
+        if isinstance(data, TurningPair):
+            return data
+        if isinstance(data, Mapping):
+            _check_keys(data, ("links", "axis", "bearings"), where)
+            if "links" not in data or "axis" not in data:
+                raise DataFormatError(f"{where}: needs `links: [a, b]` and `axis`")
+            return cls(data["links"], data["axis"], tuple(data.get("bearings") or ()))
+        if isinstance(data, Sequence) and not isinstance(data, (str, bytes)) and len(data) == 3:
+            return cls((data[0], data[1]), data[2])
+        raise DataFormatError(f"{where}: expected [link, link, axis_label], got {data!r}")
+
+    def to_data(self):
+        if self.bearings:
+            return {"links": list(self.links), "axis": self.axis, "bearings": [b.to_dict() for b in self.bearings]}
+        return [self.links[0], self.links[1], self.axis]
+
+
+@dataclass(frozen=True)
+class GearPair:
+    """A gear pair (heavy edge) between the gears on links ``gears[0]`` and ``gears[1]``.
+
+    Give ``teeth`` (and ``kind``), or a ``ratio`` ``e_{a,b}`` (a number or an expression),
+    or both when they agree. Bevel pairs need Penaud's ``angles`` ``(theta_a, theta_b)``
+    with their teeth, or a signed ``ratio``. ``radii`` are pitch radii, used only by the
+    efficiency chapter; ``carrier`` is filled in by :class:`Mechanism` when left out.
+    """
+
+    gears: tuple
+    teeth: tuple[int, int] | None = None
+    ratio: sympy.Expr | None = None
+    carrier: int | str | None = None
+    kind: str = "external"
+    angles: tuple | None = None
+    radii: tuple[float, float] | None = None
+    name: str | None = None
+
+    def __post_init__(self):
+        a, b = _pair_of(self.gears, "gear pair", "gears")
+        where = f"gear pair ({a}, {b})"
+        a, b = parse_link_id(a, where), parse_link_id(b, where)
+        object.__setattr__(self, "gears", (a, b))
+        if a == b:
+            raise SelfMeshError(f"{where} meshes gear {a} with itself; a gear pair needs two different links")
+        if self.kind not in GEAR_KINDS:
+            raise DataFormatError(f"{where}: type must be one of {', '.join(GEAR_KINDS)}, got {self.kind!r}")
+        if self.teeth is not None:
+            ta, tb = _pair_of(self.teeth, where, "teeth")
+            object.__setattr__(
+                self, "teeth", (parse_teeth(ta, f"{where}, gear {a}"), parse_teeth(tb, f"{where}, gear {b}"))
+            )
+        if self.ratio is not None:
+            r = parse_expr(self.ratio, f"{where} ratio")
+            if r == 0:
+                raise DataFormatError(f"{where}: ratio must not be zero")
+            object.__setattr__(self, "ratio", r)
+        if self.angles is not None:
+            th = _pair_of(self.angles, where, "angles")
+            th = tuple(parse_expr(t, f"{where} angle") for t in th)
+            object.__setattr__(self, "angles", th)
+            if self.teeth is None:
+                raise DataFormatError(f"{where}: `angles` (Penaud's complex weights) need `teeth` as well")
+        if self.radii is not None:
+            ra, rb = _pair_of(self.radii, where, "radii")
+            object.__setattr__(
+                self, "radii", (parse_positive(ra, f"{where} radius of {a}"), parse_positive(rb, f"{where} radius of {b}"))
+            )
+        if self.carrier is not None:
+            c = parse_link_id(self.carrier, where)
+            object.__setattr__(self, "carrier", c)
+            if c in (a, b):
+                raise CarrierError(f"{where}: the carrier must be a third link, not gear {c} itself")
+        if self.teeth is None and self.ratio is None:
+            raise DataFormatError(f"{where}: give `teeth: [N_{a}, N_{b}]` or a gear `ratio`")
+        if self.kind == "bevel" and self.ratio is None and self.angles is None:
+            raise DataFormatError(
+                f"{where}: a bevel pair needs Penaud's `angles: [theta_{a}, theta_{b}]` or a signed `ratio`; "
+                "the sign of a bevel ratio depends on the chosen axis directions"
+            )
+        self._check_ratio_agrees(where)
+
+    def _teeth_ratio(self):
+        a_n, b_n = self.teeth
+        if self.angles is not None:
+            ta, tb = self.angles
+            return sympy.nsimplify(-sympy.Rational(a_n, b_n) * sympy.exp(sympy.I * (ta - tb)))
+        sign = -1 if self.kind == "external" else 1
+        return sympy.Rational(sign * a_n, b_n)
+
+    def _check_ratio_agrees(self, where):
+        if self.teeth is None or self.ratio is None or self.ratio.free_symbols:
+            return
+        if self.kind == "bevel" and self.angles is None:
+            ok = sympy.simplify(abs(self.ratio) - sympy.Rational(*self.teeth)) == 0
+        else:
+            ok = sympy.simplify(self.ratio - self._teeth_ratio()) == 0
+        if not ok:
+            raise DataFormatError(
+                f"{where}: ratio {self.ratio} disagrees with teeth {list(self.teeth)} ({self.kind}); "
+                "give one of them, or make them agree"
+            )
+
+    @cached_property
+    def e(self) -> sympy.Expr:
+        """The gear ratio ``e_{a,b} = omega(b/c) / omega(a/c)``, exact (or symbolic)."""
+        if self.ratio is not None:
+            return self.ratio
+        return self._teeth_ratio()
+
+    @cached_property
+    def e_value(self) -> complex:
+        """The gear ratio as a (complex) floating-point number, for numeric solvers."""
+        if self.ratio is None and self.angles is None:
+            na, nb = self.teeth
+            return complex((-na if self.kind == "external" else na) / nb)
+        if self.e.free_symbols:
+            raise DataFormatError(f"gear pair {self.label} has a symbolic ratio {self.e}; substitute numbers")
+        return complex(sympy.N(self.e, 20))
+
+    @property
+    def symbol(self) -> sympy.Symbol:
+        """The symbol ``e_a_b`` that stands for this pair's ratio in symbolic analyses."""
+        return sympy.Symbol(f"e_{self.gears[0]}_{self.gears[1]}")
+
+    @cached_property
+    def weights(self) -> tuple[sympy.Expr, sympy.Expr]:
+        """Penaud's table entries ``(T(a, b), T(b, a))``, with ``e = -T(a,b)/T(b,a)``."""
+        if self.teeth is not None and (self.ratio is None or self.ratio.free_symbols == set()):
+            na, nb = self.teeth
+            if self.angles is not None:
+                ta, tb = self.angles
+                return (na * sympy.exp(sympy.I * ta), nb * sympy.exp(sympy.I * tb))
+            if self.kind == "bevel":  # teeth with a signed ratio: keep the magnitudes, carry the sign
+                return (sympy.Integer(na), sympy.nsimplify(-na / self.e))
+            return (sympy.Integer(na), sympy.Integer(nb if self.kind == "external" else -nb))
+        return (-self.e, sympy.Integer(1))
+
+    @property
+    def label(self) -> str:
+        a, b = self.gears
+        return f"({a}, {b})"
+
+    @classmethod
+    def from_data(cls, data, where: str = "gear pair") -> GearPair:
+        if isinstance(data, GearPair):
+            return data
+        if not isinstance(data, Mapping):
+            raise DataFormatError(f"{where}: expected a mapping such as {{gears: [1, 2], teeth: [20, 40]}}, got {data!r}")
+        fields = ("gears", "teeth", "ratio", "carrier", "type", "kind", "angles", "radii", "name")
+        _check_keys(data, fields, where)
+        if "gears" not in data:
+            raise DataFormatError(f"{where}: missing `gears: [a, b]`")
+        kw = {k: v for k, v in data.items() if k not in ("type", "kind")}
+        kind = data.get("type", data.get("kind", "external"))
+        return cls(kind=kind, **kw)
+
+    def to_data(self) -> dict:
+        out: dict = {"gears": list(self.gears)}
+        if self.teeth is not None:
+            out["teeth"] = list(self.teeth)
+        if self.ratio is not None:
+            out["ratio"] = expr_to_data(self.ratio)
+        if self.kind != "external":
+            out["type"] = self.kind
+        if self.angles is not None:
+            out["angles"] = [expr_to_data(t) for t in self.angles]
+        if self.radii is not None:
+            out["radii"] = list(self.radii)
+        if self.carrier is not None:
+            out["carrier"] = self.carrier
+        if self.name:
+            out["name"] = self.name
+        return out
+
+
+_MECH_FIELDS = ("name", "description", "source", "links", "turning_pairs", "gear_pairs", "ground", "inputs", "layout")
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A geared mechanism: links, turning pairs and gear pairs, validated on construction.
+
+    Build it from data with :meth:`from_dict` or :func:`gearlib.load`, or directly; lists
+    of tuples such as ``[(1, 2, "a")]`` are accepted for the pairs. Change one with
+    :meth:`replace` or :meth:`with_gear_pair`: the result is a new, re-validated object.
+
+    Attributes
+    ----------
+    links, turning_pairs, gear_pairs : tuple
+    name, description, source : str
+        ``source`` cites where the mechanism comes from.
+    ground : link id, optional
+        The link usually held fixed (a default for analyses and drawings).
+    inputs : tuple of link ids, optional
+        The usual input links (a default for drawings and the command line).
+    layout : tuple of (link id, (x, y)), optional
+        Positions for drawing the graph as the source draws it.
+    """
+
+    links: tuple
+    turning_pairs: tuple = ()
+    gear_pairs: tuple = ()
+    name: str = "mechanism"
+    description: str | None = None
+    source: str | None = None
+    ground: int | str | None = None
+    inputs: tuple = ()
+    layout: tuple | None = field(default=None, compare=False)
+
+    # ------------------------------------------------------------------ validation
+    def __post_init__(self):
+        links = self._coerce_links(self.links)
+        ids = [lk.id for lk in links]
+        known = set(ids)
+        tps = tuple(TurningPair.from_data(t, f"turning pair {i + 1}") for i, t in enumerate(self.turning_pairs or ()))
+        gps = tuple(GearPair.from_data(g, f"gear pair {i + 1}") for i, g in enumerate(self.gear_pairs or ()))
+
+        def need(link, where):
+            if link not in known:
+                raise UnknownLinkError(
+                    f"{where} refers to unknown link {link}; declared links are {_fmt(ids)}. "
+                    f"Add {link} to `links` or fix the id."
+                )
+
+        seen = {}
+        for tp in tps:
+            for x in tp.links:
+                need(x, f"turning pair {tp.links}")
+            key = frozenset(tp.links)
+            if key in seen:
+                raise DuplicateEdgeError(f"turning pair {tp.links} is given twice; remove one")
+            seen[key] = tp
+        seen_g = {}
+        for gp in gps:
+            for x in gp.gears:
+                need(x, f"gear pair {gp.label}")
+            if gp.carrier is not None:
+                need(gp.carrier, f"carrier of gear pair {gp.label}")
+            key = frozenset(gp.gears)
+            if key in seen_g:
+                raise DuplicateEdgeError(f"gear pair {gp.label} is given twice; remove one")
+            seen_g[key] = gp
+        object.__setattr__(self, "links", links)
+        object.__setattr__(self, "turning_pairs", tps)
+
+        comps = components(ids, [tp.links for tp in tps] + [gp.gears for gp in gps])
+        if len(comps) > 1:
+            pieces = "; ".join("{" + _fmt(c) + "}" for c in comps)
+            raise DisconnectedError(
+                f"mechanism {self.name!r} falls apart into {len(comps)} pieces: {pieces}. "
+                "Join them with a turning pair or a gear pair, or describe them separately."
+            )
+        groups = CoaxialGroups([(tp.links[0], tp.links[1], tp.axis) for tp in tps])
+        object.__setattr__(self, "gear_pairs", tuple(self._resolve_carrier(gp, groups) for gp in gps))
+        self._check_gear_loops()
+        loop = groups.mixed_loop()
+        if loop is not None:
+            raise AxisError(
+                f"turning pairs among links {_fmt(loop)} close a loop with more than one axis label; "
+                "such a loop would be rigid. Only coaxial bearings (one label) may form loops: "
+                "check the axis labels or remove a turning pair."
+            )
+        for attr in ("ground",):
+            value = getattr(self, attr)
+            if value is not None:
+                value = parse_link_id(value, attr)
+                need(value, f"`{attr}`")
+                object.__setattr__(self, attr, value)
+        inputs = tuple(parse_link_id(x, "inputs") for x in (self.inputs or ()))
+        for x in inputs:
+            need(x, "`inputs`")
+        object.__setattr__(self, "inputs", inputs)
+        if self.layout is not None:
+            object.__setattr__(self, "layout", self._coerce_layout(self.layout, known))
+        object.__setattr__(self, "_groups", groups)
+
+    @staticmethod
+    def _coerce_links(links) -> tuple:
+        if isinstance(links, Mapping):
+            items = [Link(k, v) for k, v in links.items()]
+        elif isinstance(links, (str, bytes)) or not isinstance(links, Sequence):
+            raise DataFormatError(f"`links` must be a list of ids or a mapping id -> name, got {links!r}")
+        else:
+            items = []
+            for i, x in enumerate(links):
+                if isinstance(x, Link):
+                    items.append(x)
+                elif isinstance(x, Mapping):
+                    _check_keys(x, ("id", "name"), f"link {i + 1}")
+                    if "id" not in x:
+                        raise DataFormatError(f"link {i + 1}: missing `id`")
+                    items.append(Link(x["id"], x.get("name")))
+                else:
+                    items.append(Link(x))
+        if not items:
+            raise DataFormatError("`links` is empty; a mechanism needs at least two links")
+        seen = set()
+        for lk in items:
+            if lk.id in seen:
+                raise DuplicateEdgeError(f"link {lk.id} is declared twice in `links`")
+            seen.add(lk.id)
+        return tuple(items)
+
+    @staticmethod
+    def _coerce_layout(layout, known) -> tuple:
+        items = layout.items() if isinstance(layout, Mapping) else layout
+        out = []
+        for k, xy in items:
+            k = parse_link_id(k, "layout")
+            if k not in known:
+                raise UnknownLinkError(f"`layout` places unknown link {k}")
+            x, y = _pair_of(xy, f"layout of link {k}", "position")
+            out.append((k, (float(x), float(y))))
+        return tuple(out)
+
+    def _resolve_carrier(self, gp: GearPair, groups: CoaxialGroups) -> GearPair:
+        a, b = gp.gears
+        label = groups.coaxial_label(a, b)
+        if label is not None:
+            raise CarrierError(
+                f"gear pair {gp.label}: gears {a} and {b} are coaxial (axis {label!r}) and cannot mesh; "
+                "check the axis labels of their turning pairs"
+            )
+        cands = groups.carrier_candidates(a, b)
+        carriers = sorted({c for c, _, _ in cands}, key=str)
+        if gp.carrier is not None:
+            if gp.carrier in carriers:
+                return gp
+            hint = f"the turning pairs make {_fmt(carriers)} the carrier" if carriers else self._why_no_carrier(gp, groups)
+            raise CarrierError(
+                f"gear pair {gp.label}: carrier {gp.carrier} does not hold both gears "
+                f"(each gear must be joined to its carrier by turning pairs on one axis, the two gears on "
+                f"different axes); {hint}"
+            )
+        if len(carriers) == 1:
+            return dataclasses.replace(gp, carrier=carriers[0])
+        if not carriers:
+            raise CarrierError(f"gear pair {gp.label} has no possible carrier: {self._why_no_carrier(gp, groups)}")
+        raise CarrierError(
+            f"gear pair {gp.label} has more than one possible carrier ({_fmt(carriers)}); "
+            "give `carrier:` explicitly or check the axis labels"
+        )
+
+    def _check_gear_loops(self) -> None:
+        """Gear pairs on one carrier must form a tree, or close loops whose ratios multiply to 1
+        (a duplicate planet); otherwise the loop locks its gears."""
+        trees: dict = {}
+        for gp in self.gear_pairs:
+            uf, adj = trees.setdefault(gp.carrier, (UnionFind(), {}))
+            a, b = gp.gears
+            uf.add(a)
+            uf.add(b)
+            if not uf.union(a, b):
+                path = self._tree_path(adj, b, a)  # b -> ... -> a, then the new pair a -> b
+                product = gp.e
+                for _x, _y, e in path:
+                    product = product * e
+                if sympy.simplify(product - 1) != 0:
+                    loop = " -> ".join(str(x) for x, _, _ in path) + f" -> {a}"
+                    raise OverconstrainedError(
+                        f"gear pair {gp.label} closes a loop of gears on carrier {gp.carrier} ({loop} -> {b}) whose "
+                        f"ratios multiply to {sympy.nsimplify(product)}, not 1: the loop locks its gears. "
+                        "Remove one pair of the loop or fix the tooth numbers"
+                    )
+            adj.setdefault(a, []).append((b, gp.e))
+            adj.setdefault(b, []).append((a, 1 / gp.e))
+
+    @staticmethod
+    def _tree_path(adj, start, goal):
+        """Edges ``(x, y, e_xy)`` of the path from *start* to *goal* in a forest given as adjacency."""
+        prev = {start: None}
+        queue = [start]
+        while queue:
+            x = queue.pop()
+            if x == goal:
+                break
+            for y, e in adj.get(x, ()):
+                if y not in prev:
+                    prev[y] = (x, e)
+                    queue.append(y)
+        path = []
+        y = goal
+        while prev[y] is not None:
+            x, e = prev[y]
+            path.append((x, y, e))
+            y = x
+        return path[::-1]
+
+    @staticmethod
+    def _why_no_carrier(gp, groups) -> str:
+        for g in gp.gears:
+            if g not in groups.membership:
+                return f"gear {g} has no turning pair; give it a bearing (turning pair) on its carrier"
+        a, b = gp.gears
+        return (
+            f"no link is joined by turning pairs to gear {a} on one axis and to gear {b} on another. "
+            "Add the turning pairs that hold both gears on one link (the carrier), or fix the axis labels"
+        )
+
+    # ------------------------------------------------------------------ conversions
+    @classmethod
+    def from_dict(cls, data: Mapping) -> Mechanism:
+        """Build a mechanism from plain data (as read from YAML or JSON)."""
+        if not isinstance(data, Mapping):
+            raise DataFormatError(f"a mechanism must be a mapping with `links`, `gear_pairs`, ...; got {type(data).__name__}")
+        _check_keys(data, _MECH_FIELDS, "mechanism")
+        if "links" not in data:
+            raise DataFormatError("mechanism: missing `links`")
+        for key in ("turning_pairs", "gear_pairs"):
+            value = data.get(key)
+            if value is not None and (isinstance(value, (str, bytes, Mapping)) or not isinstance(value, Sequence)):
+                raise DataFormatError(f"mechanism: `{key}` must be a list, got {type(value).__name__}")
+        inputs = data.get("inputs") or ()
+        if isinstance(inputs, (int, str)):
+            inputs = (inputs,)
+        return cls(
+            links=data["links"],
+            turning_pairs=tuple(data.get("turning_pairs") or ()),
+            gear_pairs=tuple(data.get("gear_pairs") or ()),
+            name=str(data.get("name") or "mechanism"),
+            description=data.get("description"),
+            source=data.get("source"),
+            ground=data.get("ground"),
+            inputs=tuple(inputs),
+            layout=data.get("layout"),
+        )
+
+    def to_dict(self) -> dict:
+        """Plain data that :meth:`from_dict` reads back to an equal mechanism."""
+        out: dict = {"name": self.name}
+        if self.description:
+            out["description"] = self.description
+        if self.source:
+            out["source"] = self.source
+        out["links"] = {lk.id: lk.name for lk in self.links}
+        out["turning_pairs"] = [tp.to_data() for tp in self.turning_pairs]
+        out["gear_pairs"] = [gp.to_data() for gp in self.gear_pairs]
+        if self.ground is not None:
+            out["ground"] = self.ground
+        if self.inputs:
+            out["inputs"] = list(self.inputs)
+        if self.layout is not None:
+            out["layout"] = {k: list(xy) for k, xy in self.layout}
+        return out
+
+    def replace(self, **changes) -> Mechanism:
+        """A copy with some fields changed, validated again."""
+        return dataclasses.replace(self, **changes)
+
+    def with_gear_pair(self, gears, **changes) -> Mechanism:
+        """A copy in which the gear pair between ``gears`` has some fields changed,
+        e.g. ``m.with_gear_pair((1, 2), teeth=(30, 15))``."""
+        gp, _ = self.gear_pair(*gears)
+        if "teeth" in changes and "ratio" not in changes and gp.ratio is not None and not gp.ratio.free_symbols:
+            if gp.kind == "bevel" and gp.angles is None:  # keep the sign, take the size from the teeth
+                na, nb = changes["teeth"]
+                changes["ratio"] = sympy.sign(gp.ratio) * sympy.Rational(parse_teeth(na, "teeth"), parse_teeth(nb, "teeth"))
+            else:
+                changes["ratio"] = None
+        pairs = tuple(dataclasses.replace(p, **changes) if p is gp else p for p in self.gear_pairs)
+        return self.replace(gear_pairs=pairs)
+
+    # ------------------------------------------------------------------ lookups
+    @cached_property
+    def link_ids(self) -> tuple:
+        """Link ids in declaration order (the column order of every matrix)."""
+        return tuple(lk.id for lk in self.links)
+
+    @cached_property
+    def index(self) -> dict:
+        """Column index of each link id."""
+        return {x: i for i, x in enumerate(self.link_ids)}
+
+    def link(self, link_id) -> Link:
+        """The :class:`Link` with this id (``"3"`` finds link 3)."""
+        key = self.resolve(link_id)
+        return self.links[self.index[key]]
+
+    def resolve(self, link_id, what: str = "link"):
+        """Normalise a link id given by a user; raise :class:`UnknownLinkError` if there is none."""
+        try:
+            key = parse_link_id(link_id, what)
+        except DataFormatError:
+            key = link_id
+        if key in self.index:
+            return key
+        for lk in self.links:  # a link may also be named by its name
+            if lk.name is not None and lk.name == link_id:
+                return lk.id
+        raise UnknownLinkError(f"{what} {link_id!r} is not a link of {self.name!r}; links are {_fmt(self.link_ids)}")
+
+    def gear_pair(self, a, b) -> tuple[GearPair, int]:
+        """The gear pair between gears *a* and *b*, and +1 or -1 for its orientation."""
+        a, b = self.resolve(a, "gear"), self.resolve(b, "gear")
+        for gp in self.gear_pairs:
+            if gp.gears == (a, b):
+                return gp, 1
+            if gp.gears == (b, a):
+                return gp, -1
+        raise UnknownLinkError(f"{self.name!r} has no gear pair between {a} and {b}")
+
+    def coaxial(self, u, v) -> str | None:
+        """The axis label on which links *u* and *v* are coaxial, or None."""
+        u, v = self.resolve(u), self.resolve(v)
+        if u == v:
+            return "self"
+        return self._groups.coaxial_label(u, v)
+
+    def carrier_candidates(self, a, b) -> list:
+        """Every link that could carry a gear pair between *a* and *b* (Tsai's transfer vertex)."""
+        a, b = self.resolve(a), self.resolve(b)
+        return sorted({c for c, _, _ in self._groups.carrier_candidates(a, b)}, key=str)
+
+    def axis_of(self, gear, carrier) -> str | None:
+        """The axis label of *gear* on *carrier* (their coaxial label), or None."""
+        return self._groups.coaxial_label(self.resolve(gear), self.resolve(carrier))
+
+    @property
+    def redundant_turning_pairs(self) -> tuple[TurningPair, ...]:
+        """Turning pairs that close a loop of coaxial bearings (kinematically redundant)."""
+        return tuple(self.turning_pairs[i] for i in self._groups.redundant)
+
+    @property
+    def is_symbolic(self) -> bool:
+        """True when some gear ratio is a symbolic expression."""
+        return any(gp.e.free_symbols for gp in self.gear_pairs)
+
+    @property
+    def is_planar(self) -> bool:
+        """True when every gear pair is a spur pair (parallel axes)."""
+        return all(gp.kind != "bevel" for gp in self.gear_pairs)
+
+    def __repr__(self) -> str:
+        return (
+            f"<Mechanism {self.name!r}: {len(self.links)} links, {len(self.turning_pairs)} turning pairs, "
+            f"{len(self.gear_pairs)} gear pairs>"
+        )

@@ -1,0 +1,220 @@
+"""Drawings: the graph of a mechanism in the papers' convention, and speeds.
+
+Every function takes ``ax=`` (a new figure is made when it is None), draws, and returns
+the axes; none calls ``plt.show()``. Nothing here changes matplotlib's global settings:
+:func:`style` is a context manager for the book's look.
+
+Graph convention (Freudenstein; Tsai; Liu and Chen): links are vertices, gear pairs heavy
+edges, turning pairs thin edges labelled with their axis. The ground is drawn as a grey
+square, input links as black squares, other links as circles.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+
+import numpy as np
+
+from .graph import to_networkx
+from .mechanism import Mechanism
+
+__all__ = ["style", "graph_layout", "draw_graph", "plot_speeds", "plot_ratio_sweep", "plot_speed_sweep"]
+
+_STYLE = {
+    "figure.figsize": (6.0, 4.0),
+    "figure.dpi": 100,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "font.size": 10,
+}
+
+
+@contextlib.contextmanager
+def style():
+    """The book's plotting style, as a context: ``with gl.plot.style(): ...``."""
+    import matplotlib
+
+    with matplotlib.rc_context(_STYLE):
+        yield
+
+
+def _axes(ax, figsize=(5.0, 4.0)):
+    if ax is not None:
+        return ax
+    import matplotlib.pyplot as plt
+
+    _, ax = plt.subplots(figsize=figsize)
+    return ax
+
+
+def graph_layout(mech: Mechanism) -> dict:
+    """Vertex positions: the mechanism's own ``layout`` when it has one, else a
+    deterministic Kamada-Kawai layout of its graph."""
+    if mech.layout:
+        return dict(mech.layout)
+    import networkx as nx
+
+    g = nx.Graph()
+    g.add_nodes_from(mech.link_ids)
+    for tp in mech.turning_pairs:
+        g.add_edge(*tp.links)
+    for gp in mech.gear_pairs:
+        g.add_edge(*gp.gears)
+    if len(g) <= 2:
+        return {n: (float(i), 0.0) for i, n in enumerate(mech.link_ids)}
+    # start from a circle so the result does not depend on any random state
+    start = {n: (math.cos(2 * math.pi * i / len(g)), math.sin(2 * math.pi * i / len(g)))
+             for i, n in enumerate(mech.link_ids)}
+    pos = nx.kamada_kawai_layout(g, pos=start)
+    return {n: (float(x), float(y)) for n, (x, y) in pos.items()}
+
+
+def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, highlight=(),
+               highlight_color="tab:orange", title=None, node_size=420, font_size=10):
+    """Draw the graph of *mech*: heavy edges for gear pairs, thin labelled edges for turning pairs.
+
+    Parameters
+    ----------
+    ground, inputs : link ids drawn as a grey square and black squares (default: the
+        mechanism's own ``ground`` and ``inputs``).
+    pos : dict link -> (x, y), optional; default :func:`gearlib.plot.graph_layout`.
+    highlight : links or gear pairs (2-tuples of gears) drawn in ``highlight_color``.
+    """
+    from matplotlib.patches import FancyArrowPatch
+
+    ax = _axes(ax)
+    pos = dict(pos or graph_layout(mech))
+    ground = mech.ground if ground is None else mech.resolve(ground)
+    inputs = set(mech.inputs if inputs is None else (mech.resolve(x) for x in inputs))
+    hl = set()
+    for h in highlight or ():
+        hl.add(frozenset(h) if isinstance(h, tuple) else h)
+    g = to_networkx(mech)
+    seen: dict = {}
+    for u, v, data in g.edges(data=True):
+        key = frozenset((u, v))
+        k = seen.get(key, 0)
+        seen[key] = k + 1
+        rad = 0.0 if k == 0 else 0.25 * (1 if k % 2 else -1) * ((k + 1) // 2)
+        heavy = data["kind"] == "heavy"
+        color = highlight_color if key in hl else "black"
+        patch = FancyArrowPatch(
+            pos[u], pos[v], arrowstyle="-", connectionstyle=f"arc3,rad={rad}",
+            linewidth=4.0 if heavy else 1.2, color=color, zorder=1, shrinkA=0, shrinkB=0,
+        )
+        ax.add_patch(patch)
+        if not heavy:
+            (x0, y0), (x1, y1) = pos[u], pos[v]
+            mx, my = (x0 + x1) / 2, (y0 + y1) / 2
+            dx, dy = x1 - x0, y1 - y0
+            norm = math.hypot(dx, dy) or 1.0
+            off = 0.06 + rad * 0.5
+            ax.text(mx - dy / norm * off, my + dx / norm * off, data["axis"], fontsize=font_size - 1,
+                    ha="center", va="center", style="italic", color=color, zorder=3)
+    for link in mech.link_ids:
+        x, y = pos[link]
+        marker, face = "o", "white"
+        if link == ground:
+            marker, face = "s", "0.75"
+        elif link in inputs:
+            marker, face = "s", "black"
+        edge = highlight_color if link in hl else "black"
+        ax.scatter([x], [y], s=node_size, marker=marker, facecolor=face, edgecolor=edge, linewidth=1.5, zorder=2)
+        ax.text(x, y, str(link), ha="center", va="center", fontsize=font_size,
+                color="white" if face == "black" else "black", zorder=4)
+    xs = [p[0] for p in pos.values()]
+    ys = [p[1] for p in pos.values()]
+    pad = 0.15 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
+    ax.set_xlim(min(xs) - pad, max(xs) + pad)
+    ax.set_ylim(min(ys) - pad, max(ys) + pad)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    ax.set_title(title if title is not None else mech.name)
+    return ax
+
+
+def plot_speeds(solution, ax=None, *, links=None, title=None):
+    """Bar chart of link speeds (relative to the ground) from a :class:`~gearlib.Solution`.
+
+    Complex speeds (bevel trains in Penaud's method) are drawn by magnitude, with their
+    angle written on the bar.
+    """
+    ax = _axes(ax, figsize=(6.0, 3.2))
+    mech = solution.mechanism
+    links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))
+    values = np.array([complex(solution.as_complex()[mech.index[x]]) for x in links])
+    is_complex = np.any(np.abs(values.imag) > 1e-12 * np.maximum(1.0, np.abs(values)))
+    heights = np.abs(values) if is_complex else values.real
+    names = [f"{x}\n{mech.link(x).name}" if mech.link(x).name else str(x) for x in links]
+    colors = ["0.6" if x == solution.constraints.ground else "tab:blue" for x in links]
+    bars = ax.bar(range(len(links)), heights, color=colors)
+    ax.set_xticks(range(len(links)), names, fontsize=8)
+    ax.axhline(0, color="black", linewidth=0.8)
+    ax.set_ylabel("|ω|" if is_complex else "ω")
+    for bar, z, h in zip(bars, values, heights):
+        text = f"{h:.3g}" if not is_complex else f"{abs(z):.3g}∠{np.angle(z):.2f}"
+        ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
+                    va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
+                    textcoords="offset points")
+    ax.set_title(title if title is not None else f"speeds, link {solution.constraints.ground} fixed")
+    return ax
+
+
+def plot_ratio_sweep(xs, ratios, ax=None, *, xlabel="", ylabel="speed ratio", marks=(), title=None):
+    """Line plot of a speed ratio against a design parameter (the static twin of a slider).
+
+    ``marks`` are x values to highlight (for example the settings a widget starts at).
+    """
+    ax = _axes(ax, figsize=(5.0, 3.2))
+    xs = np.asarray(xs, dtype=float)
+    ys = np.asarray([float(r) for r in ratios])
+    ax.plot(xs, ys, marker="o", markersize=3)
+    for x in marks:
+        i = int(np.argmin(np.abs(xs - x)))
+        ax.plot([xs[i]], [ys[i]], marker="o", markersize=8, color="tab:orange")
+        ax.annotate(f"{ys[i]:.4g}", (xs[i], ys[i]), xytext=(5, 5), textcoords="offset points")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if title:
+        ax.set_title(title)
+    return ax
+
+
+def plot_speed_sweep(mech: Mechanism, ground=None, inputs=None, *, pair, gear, values, links=None, ax=None,
+                     title=None):
+    """Every link's speed as the tooth number of one gear varies: the static twin of
+    :func:`gearlib.widgets.speed_explorer`.
+
+    ``pair`` names the gear pair (two gears), ``gear`` the gear of that pair whose tooth
+    number takes each of ``values``. Complex speeds are drawn by magnitude.
+    """
+    from .kinematics import speeds
+
+    ax = _axes(ax, figsize=(6.0, 3.4))
+    gp, _ = mech.gear_pair(*pair)
+    gear = mech.resolve(gear)
+    ground = mech.ground if ground is None else ground
+    inputs = inputs if inputs is not None else {x: 1 for x in mech.inputs}
+    links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))
+    rows = []
+    for n in values:
+        teeth = (n, gp.teeth[1]) if gear == gp.gears[0] else (gp.teeth[0], n)
+        sol = speeds(mech.with_gear_pair(gp.gears, teeth=teeth), ground, inputs)
+        z = sol.as_complex()
+        rows.append([z[mech.index[x]] for x in links])
+    rows = np.array(rows)
+    is_complex = np.any(np.abs(rows.imag) > 1e-12 * np.maximum(1.0, np.abs(rows)))
+    for j, x in enumerate(links):
+        if x == ground:
+            continue
+        name = mech.link(x).name
+        y = np.abs(rows[:, j]) if is_complex else rows[:, j].real
+        ax.plot(list(values), y, marker="o", markersize=3, label=f"{x} {name}" if name else str(x))
+    ax.axhline(0, color="black", linewidth=0.8)
+    ax.axvline(gp.teeth[gp.gears.index(gear)], color="0.6", linestyle=":", linewidth=1)
+    ax.set_xlabel(f"teeth of gear {gear} in pair {gp.label}")
+    ax.set_ylabel("|ω|" if is_complex else "ω")
+    ax.legend(fontsize=8, ncols=2)
+    ax.set_title(title if title is not None else f"speeds, link {ground} fixed")
+    return ax

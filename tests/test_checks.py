@@ -1,0 +1,56 @@
+"""Every exercise check accepts its reference solution and answers wrong ones with a hint.
+
+Reference solutions are the worked solutions of the book's solution pages, typed here;
+the wrong answers are typical mistakes. Add a row whenever a chapter adds a check.
+"""
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import sympy
+
+import gearlib as gl
+
+# name -> (reference solution, [wrong answers])
+ANSWERS = {
+    # ---------------------------------------------------------------- 00 introduction
+    "intro_gear_ratio": (Fraction(-1, 3), [Fraction(1, 3), -3, "-0.3"]),
+    "intro_planetary_ratio": (Fraction(2, 7), [Fraction(7, 2), Fraction(5, 7), 0.3, "-2/7"]),
+}
+
+
+def test_every_check_has_reference_answers():
+    missing = sorted(set(gl.check.names()) - set(ANSWERS))
+    assert not missing, f"add reference answers for {missing}"
+
+
+@pytest.mark.parametrize("name", sorted(ANSWERS))
+def test_reference_solution_passes(name):
+    ref, _ = ANSWERS[name]
+    result = gl.check.get(name)(ref)
+    assert result.passed, result.message
+
+
+@pytest.mark.parametrize("name", sorted(ANSWERS))
+def test_wrong_answers_get_a_hint_not_the_solution(name):
+    ref, wrongs = ANSWERS[name]
+    assert len(wrongs) >= 2
+    check = gl.check.get(name)
+    for wrong in wrongs:
+        result = check(wrong)
+        assert not result.passed, wrong
+        assert result.message and "Well done" not in result.message
+        for shown in {str(ref), str(sympy.sympify(ref) if not callable(ref) else "")} - {""}:
+            if len(shown) > 2:
+                assert shown not in result.message, f"{name} reveals the solution"
+
+
+@pytest.mark.parametrize("name", sorted(ANSWERS))
+def test_checks_never_crash_and_stubs_fail(name):
+    check = gl.check.get(name)
+    for junk in (None, "", "not an answer", float("nan"), [1, 2, 3], {"a": 1}, object(), np.array([[1, 2]]),
+                 sympy.Symbol("x") + 1, lambda x: x, True, 10**400):
+        result = check(junk)
+        assert not result.passed, (name, junk)
+        assert isinstance(result.message, str) and result.message

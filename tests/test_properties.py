@@ -1,0 +1,87 @@
+"""Property tests on random valid mechanisms: every solver agrees, every Willis equation holds."""
+
+import numpy as np
+import pytest
+import sympy
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+import gearlib as gl
+
+mechanisms = st.builds(
+    lambda seed, n, dof, bevel: (seed, n, dof, bevel),
+    st.integers(0, 10**6), st.integers(3, 10), st.integers(1, 3), st.sampled_from([0.0, 0.5]),
+)
+
+
+def build(params):
+    seed, n, dof, bevel = params
+    assume(n >= dof + 2)
+    try:
+        return gl.random_mechanism(n, dof=dof, rng=seed, bevel=bevel)
+    except ValueError:
+        assume(False)
+
+
+def inputs_for(m, rng):
+    """Independent inputs on links 1, 2, ...: holding an independent input removes one freedom."""
+    n = int(gl.dof(m, 0))
+    chosen = []
+    for link in m.link_ids[1:]:
+        if int(gl.dof(m, 0, held=chosen + [link])) == n - len(chosen) - 1:
+            chosen.append(link)
+        if len(chosen) == n:
+            break
+    return {link: int(rng.integers(1, 9)) for link in chosen}
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mechanisms)
+def test_three_solvers_agree_and_satisfy_willis(params):
+    m = build(params)
+    rng = np.random.default_rng(params[0])
+    inputs = inputs_for(m, rng)
+    mob = gl.dof(m, 0)
+    assert mob.rank == params[2]  # the generator's promise
+    exact = gl.speeds(m, ground=0, inputs=inputs, method="exact")
+    ref = exact.as_complex()
+    for method in ("nullspace", "numeric"):
+        got = gl.speeds(m, ground=0, inputs=inputs, method=method).as_complex()
+        assert np.allclose(got, ref, rtol=1e-8, atol=1e-8 * max(1.0, np.abs(ref).max()))
+    sym = gl.speeds(m, ground=0, inputs=inputs, method="symbolic")
+    subs = gl.ratio_symbols(m)
+    sym_num = np.array([complex(sympy.N(sympy.sympify(v).subs(subs), 30)) for v in sym.values])
+    assert np.allclose(sym_num, ref, rtol=1e-9, atol=1e-9 * max(1.0, np.abs(ref).max()))
+    # every Willis equation holds exactly for the exact solution
+    values = {gl.omega(k): v if isinstance(v, sympy.Basic) else sympy.Rational(v.numerator, v.denominator)
+              for k, v in exact.items()}
+    for eq in gl.willis_equations(m, symbolic=False):
+        residual = sympy.expand_complex(eq.residual.subs(values))
+        assert residual == 0 or abs(complex(sympy.N(residual, 60))) < 1e-40
+    # inputs are reproduced
+    for link, value in inputs.items():
+        assert exact[link] == value
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 10**6), st.integers(3, 30))
+def test_counts_equal_rank_for_tree_mechanisms(seed, n):
+    m = gl.random_mechanism(n, dof=1, rng=seed)
+    mob = gl.dof(m, 0)
+    assert mob.rank == mob.count == 1
+    assert mob.planar == 1 if m.is_planar else True
+
+
+def test_large_random_mechanism_numeric_matches_exact():
+    m = gl.random_mechanism(300, dof=1, rng=7)
+    exact = gl.speeds(m, ground=0, inputs={1: 1}).as_complex()
+    numeric = gl.speeds(m, ground=0, inputs={1: 1}, method="numeric").as_complex()
+    assert np.allclose(numeric, exact, rtol=1e-6, atol=1e-9 * np.abs(exact).max())
+
+
+@pytest.mark.parametrize("n", [1, 5, 40])
+def test_serial_train_ratio(n):
+    m = gl.serial_train(n, teeth=(20, 40))
+    from fractions import Fraction
+
+    assert gl.ratio(m, output=n + 1, input=1, ground=0) == Fraction(-1, 2) ** n

@@ -1,0 +1,87 @@
+"""Project hygiene: notebooks stripped and listed in the book, imports without side effects."""
+
+import json
+import pathlib
+import subprocess
+import sys
+
+import yaml
+
+from notebook_tools import ROOT, cells_with_outputs, notebooks
+
+
+def test_notebooks_are_committed_without_outputs():
+    dirty = {str(p.relative_to(ROOT)): cells for p in notebooks() if (cells := cells_with_outputs(p))}
+    assert not dirty, f"strip outputs with `make strip`: {dirty}"
+
+
+def test_every_notebook_is_in_the_table_of_contents_and_every_entry_exists():
+    toc = yaml.safe_load((ROOT / "book" / "_toc.yml").read_text())
+    files = []
+
+    def walk(node):
+        if isinstance(node, dict):
+            if "file" in node:
+                files.append(node["file"])
+            for v in node.values():
+                walk(v)
+        elif isinstance(node, list):
+            for v in node:
+                walk(v)
+
+    walk(toc)
+    files.append(toc["root"])
+    for f in files:
+        assert any((ROOT / f).with_suffix(s).exists() for s in (".ipynb", ".md")), f
+    listed = {str(pathlib.Path(f)) for f in files}
+    for p in notebooks():
+        assert str(p.relative_to(ROOT).with_suffix("")) in listed, f"{p} is not in book/_toc.yml"
+
+
+def test_notebooks_use_the_gl_alias_and_no_path_hacks():
+    for p in notebooks():
+        nb = json.loads(p.read_text())
+        code = "\n".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
+        assert "sys.path" not in code, p
+        assert "pip install" not in code, p
+        if "gearlib" in code:
+            assert "import gearlib as gl" in code, p
+
+
+STATE = r"""
+import json, random, sys
+import numpy as np
+import matplotlib
+def snapshot():
+    return {
+        "rc": {k: repr(v) for k, v in matplotlib.rcParams.items()},
+        "np_print": repr(np.get_printoptions()),
+        "np_random": repr(np.random.get_state()[1][:8].tolist()) + repr(np.random.get_state()[2:]),
+        "py_random": repr(random.getstate()[1][:8]),
+        "np_err": repr(np.geterr()),
+    }
+before = snapshot()
+import gearlib as gl
+gl.check.names()          # loads every check module
+gl.catalog.names()
+after = snapshot()
+diff = [k for k in before if before[k] != after[k]]
+print(json.dumps(diff))
+"""
+
+
+def test_importing_gearlib_changes_no_global_state():
+    out = subprocess.run([sys.executable, "-c", STATE], capture_output=True, text=True, check=True, cwd=ROOT)
+    assert json.loads(out.stdout.strip().splitlines()[-1]) == []
+
+
+def test_plotting_does_not_change_matplotlib_settings():
+    code = (
+        "import matplotlib; matplotlib.use('Agg'); import gearlib as gl;"
+        "before = dict(matplotlib.rcParams);"
+        "gl.draw_graph(gl.catalog.car_differential());"
+        "gl.speeds(gl.catalog.simple_planetary(), ground=3, inputs={1: 1}).plot();"
+        "print(before == dict(matplotlib.rcParams))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT)
+    assert out.stdout.strip() == "True"
