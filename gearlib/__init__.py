@@ -42,6 +42,12 @@ from .mechanism import Bearing, GearPair, Link, Mechanism, TurningPair
 from .mobility import Mobility, dof
 from .plot import draw_graph, plot_speeds
 
+# --- chapter 2: kinematic units (gearlib/units.py) -------------------------------
+# --- chapter 3: unit-by-unit gains (gearlib/gains.py, gearlib/robots.py) ----------
+# --- chapter 4: complex adjacency, frequencies (gearlib/adjacency.py, gearlib/frequencies.py)
+# --- chapter 5: Davies' efficiency (gearlib/davies/) ------------------------------
+# --- chapter 6: differential synthesis (gearlib/atlas.py, gearlib/synthesis.py) ---
+
 __version__ = "0.1.0"
 
 __all__ = [
@@ -57,6 +63,11 @@ __all__ = [
     "plot", "widgets", "draw_graph", "plot_speeds", "number",
     # random and large mechanisms (tests, benchmarks)
     "random_mechanism", "serial_train",
+    # chapter 2: kinematic units
+    # chapter 3: unit-by-unit gains
+    # chapter 4: complex adjacency, frequencies
+    # chapter 5: Davies' efficiency
+    # chapter 6: differential synthesis
     # errors
     "GearlibError", "MechanismError", "DataFormatError", "UnknownLinkError", "DuplicateEdgeError",
     "SelfMeshError", "ToothNumberError", "CarrierError", "AxisError", "DisconnectedError",
