@@ -9,8 +9,9 @@ widget                     static twin
 :func:`speed_explorer`     :func:`gearlib.plot.plot_speed_sweep`
 =========================  ===============================================
 
-A widget draws with a private matplotlib ``Figure`` (no pyplot state) into an image, so a
-slider update is one computation and one small render. ``ipywidgets`` is imported only
+A widget draws with a private matplotlib ``Figure`` (:class:`Canvas`, no pyplot state) into
+an image, so a slider update is one computation and one small render, and the HTML book can
+show the image without a kernel. ``ipywidgets`` is imported only
 when a widget is made.
 """
 
@@ -21,20 +22,38 @@ import io
 from .kinematics import speeds
 from .mechanism import Mechanism
 
-__all__ = ["SpeedExplorer", "speed_explorer", "render_png"]
+__all__ = ["Canvas", "SpeedExplorer", "speed_explorer", "render_png"]
 
 
-def render_png(draw, figsize=(6.0, 3.2), dpi=90) -> bytes:
+class Canvas:
+    """A private matplotlib figure that a widget redraws on every update.
+
+    Keeping one figure (no layout engine, fixed margins) and clearing its axes is about twice
+    as fast as making a new figure each time; :meth:`png` draws with ``draw(ax)`` and returns
+    the image as PNG bytes, ready for an ``ipywidgets.Image``.
+    """
+
+    def __init__(self, figsize=(6.0, 3.2), dpi=80, margins=(0.1, 0.98, 0.22, 0.9)):
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+
+        self.figure = Figure(figsize=figsize, dpi=dpi)
+        FigureCanvasAgg(self.figure)
+        left, right, bottom, top = margins
+        self.figure.subplots_adjust(left=left, right=right, bottom=bottom, top=top)
+        self.ax = self.figure.add_subplot()
+
+    def png(self, draw) -> bytes:
+        self.ax.clear()
+        draw(self.ax)
+        buf = io.BytesIO()
+        self.figure.savefig(buf, format="png")
+        return buf.getvalue()
+
+
+def render_png(draw, figsize=(6.0, 3.2), dpi=80) -> bytes:
     """Call ``draw(ax)`` on a fresh, private figure and return it as PNG bytes."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=figsize, dpi=dpi, layout="constrained")
-    FigureCanvasAgg(fig)
-    draw(fig.add_subplot())
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png")
-    return buf.getvalue()
+    return Canvas(figsize, dpi).png(draw)
 
 
 class SpeedExplorer:
@@ -54,6 +73,7 @@ class SpeedExplorer:
         self.image = b""
         self.text = ""
         self._widget = None
+        self._canvas = None
 
     def keys(self) -> list[str]:
         """Slider names: ``N_<gear>_in_<a>_<b>`` for each tooth number."""
@@ -80,7 +100,9 @@ class SpeedExplorer:
         sol = speeds(self.mechanism_for(**teeth), self.ground, self.inputs)
         inputs = ", ".join(f"ω{k} = {v}" for k, v in self.inputs.items())
         self.text = f"inputs {inputs}; link {self.ground} fixed"
-        self.image = render_png(lambda ax: plot_speeds(sol, ax=ax))
+        if self._canvas is None:
+            self._canvas = Canvas()
+        self.image = self._canvas.png(lambda ax: plot_speeds(sol, ax=ax))
         if self._widget is not None:
             self._image_widget.value = self.image
             self._label.value = self.text

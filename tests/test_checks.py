@@ -18,6 +18,11 @@ ANSWERS = {
     "intro_gear_ratio": (Fraction(-1, 3), [Fraction(1, 3), -3, "-0.3"]),
     "intro_planetary_ratio": (Fraction(2, 7), [Fraction(7, 2), Fraction(5, 7), 0.3, "-2/7"]),
     # ---------------------------------------------------------------- 01 graph representation
+    "graph_carrier": (4, [5, 1, "3"]),
+    "graph_dof_simpson": (2, [1, 3, 0]),
+    "graph_compound_ratio": (Fraction(1, 12), [Fraction(-1, 12), 12, 0.1]),
+    "graph_differential_pinion": (-110, [22, 110, Fraction(-22, 5)]),
+    "graph_humpage_ratio": (Fraction(17, 1176), [Fraction(5, 24), Fraction(1176, 17), Fraction(480, 1960)]),
     # ---------------------------------------------------------------- 02 kinematic units
     # ---------------------------------------------------------------- 03 unit-by-unit gains
     # ---------------------------------------------------------------- 04 complex adjacency
