@@ -115,6 +115,20 @@ def parse_expr(value, where: str) -> sympy.Expr:
     return expr
 
 
+def parse_real_expr(value, where: str) -> sympy.Expr:
+    """An exact expression that must be a finite real number (an angle, say)."""
+    expr = parse_expr(value, where)
+    if expr.free_symbols or expr.is_real is False or not expr.is_number:
+        raise DataFormatError(f"{where}: expected a real number, got {value!r}")
+    try:
+        v = complex(expr.evalf(30))
+    except (TypeError, ValueError):
+        raise DataFormatError(f"{where}: expected a real number, got {value!r}") from None
+    if v.imag != 0 or not math.isfinite(v.real):
+        raise DataFormatError(f"{where}: expected a real number, got {value!r}")
+    return expr
+
+
 def parse_teeth(value, where: str) -> int:
     """A tooth number: a positive integer no larger than :data:`MAX_TEETH`."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
@@ -149,6 +163,13 @@ def parse_link_id(value, where: str):
         f"{where}: link id must be an integer or a short name (letters, digits, _ ' . -; at most 32), "
         f"got {value!r}"
     )
+
+
+def parse_real(value, where: str) -> float:
+    """A finite real number."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(float(value)):
+        raise DataFormatError(f"{where}: expected a finite number, got {value!r}")
+    return float(value)
 
 
 def parse_positive(value, where: str) -> float:

@@ -106,6 +106,11 @@ class Constraints:
                 value = omega(u) if v == ground else omega(u, v)
             else:
                 value = parse_expr(value, where)
+                if value.free_symbols and not symbolic_inputs:
+                    raise InputError(
+                        f"{where}: speed {value} is not a number; give a number, or use method='symbolic' for "
+                        "symbolic speeds"
+                    )
             out.append((u, v, value))
         return cls(mech, ground, held, tuple(joined_out), tuple(out))
 

@@ -40,7 +40,15 @@ from functools import cached_property
 
 import sympy
 
-from ._parse import expr_to_data, parse_expr, parse_link_id, parse_positive, parse_teeth
+from ._parse import (
+    expr_to_data,
+    parse_expr,
+    parse_link_id,
+    parse_positive,
+    parse_real,
+    parse_real_expr,
+    parse_teeth,
+)
 from ._topology import CoaxialGroups, UnionFind, components
 from .errors import (
     AxisError,
@@ -68,6 +76,23 @@ def _check_keys(data: Mapping, allowed: Sequence[str], where: str) -> None:
         raise DataFormatError(
             f"{where}: unknown field {unknown[0]!r}; known fields are {', '.join(allowed)}"
         )
+
+
+def _seq(value, where: str, what: str) -> tuple:
+    """A list/tuple field as a tuple (None means empty), or a DataFormatError."""
+    if value is None:
+        return ()
+    if isinstance(value, (str, bytes, Mapping)) or not isinstance(value, Sequence):
+        raise DataFormatError(f"{where}: `{what}` must be a list, got {value!r}")
+    return tuple(value)
+
+
+def _text(value, where: str, what: str) -> str | None:
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return str(value)
+    raise DataFormatError(f"{where}: `{what}` must be text, got {value!r}")
 
 
 def _pair_of(value, where: str, what: str) -> tuple:
@@ -130,12 +155,14 @@ class Bearing:
                 f"{self.pitch_diameter}"
             )
         object.__setattr__(self, "balls", parse_teeth(self.balls, where + " balls"))
-        angle = parse_expr(self.contact_angle, where + " contact_angle")
-        if angle.free_symbols or not (0 <= float(angle) < float(sympy.pi / 2)):
-            raise DataFormatError(f"{where}: contact_angle must be a number in [0, pi/2) radians, got {angle}")
+        angle = parse_real_expr(self.contact_angle, where + " contact_angle")
+        if not (0 <= float(angle) < float(sympy.pi / 2)):
+            raise DataFormatError(f"{where}: contact_angle must be a number in [0, pi/2) radians, got {angle} "
+                                  "(write degrees as 15*deg)")
         object.__setattr__(self, "contact_angle", angle)
         if self.inner is not None:
             object.__setattr__(self, "inner", parse_link_id(self.inner, where + " inner"))
+        object.__setattr__(self, "name", _text(self.name, where, "name"))
 
     @classmethod
     def from_dict(cls, data: Mapping, where: str = "bearing") -> Bearing:
@@ -179,7 +206,7 @@ class TurningPair:
         object.__setattr__(self, "axis", str(self.axis))
         bearings = tuple(
             b if isinstance(b, Bearing) else Bearing.from_dict(b, f"{where} bearing {i + 1}")
-            for i, b in enumerate(self.bearings or ())
+            for i, b in enumerate(_seq(self.bearings, where, "bearings"))
         )
         for brg in bearings:
             if brg.inner is not None and brg.inner not in (a, b):
@@ -195,7 +222,7 @@ class TurningPair:
             _check_keys(data, ("links", "axis", "bearings"), where)
             if "links" not in data or "axis" not in data:
                 raise DataFormatError(f"{where}: needs `links: [a, b]` and `axis`")
-            return cls(data["links"], data["axis"], tuple(data.get("bearings") or ()))
+            return cls(data["links"], data["axis"], _seq(data.get("bearings"), where, "bearings"))
         if isinstance(data, Sequence) and not isinstance(data, (str, bytes)) and len(data) == 3:
             return cls((data[0], data[1]), data[2])
         raise DataFormatError(f"{where}: expected [link, link, axis_label], got {data!r}")
@@ -232,7 +259,7 @@ class GearPair:
         object.__setattr__(self, "gears", (a, b))
         if a == b:
             raise SelfMeshError(f"{where} meshes gear {a} with itself; a gear pair needs two different links")
-        if self.kind not in GEAR_KINDS:
+        if not isinstance(self.kind, str) or self.kind not in GEAR_KINDS:
             raise DataFormatError(f"{where}: type must be one of {', '.join(GEAR_KINDS)}, got {self.kind!r}")
         if self.teeth is not None:
             ta, tb = _pair_of(self.teeth, where, "teeth")
@@ -246,7 +273,7 @@ class GearPair:
             object.__setattr__(self, "ratio", r)
         if self.angles is not None:
             th = _pair_of(self.angles, where, "angles")
-            th = tuple(parse_expr(t, f"{where} angle") for t in th)
+            th = tuple(parse_real_expr(t, f"{where} angle") for t in th)
             object.__setattr__(self, "angles", th)
             if self.teeth is None:
                 raise DataFormatError(f"{where}: `angles` (Penaud's complex weights) need `teeth` as well")
@@ -255,6 +282,7 @@ class GearPair:
             object.__setattr__(
                 self, "radii", (parse_positive(ra, f"{where} radius of {a}"), parse_positive(rb, f"{where} radius of {b}"))
             )
+        object.__setattr__(self, "name", _text(self.name, where, "name"))
         if self.carrier is not None:
             c = parse_link_id(self.carrier, where)
             object.__setattr__(self, "carrier", c)
@@ -402,8 +430,14 @@ class Mechanism:
         links = self._coerce_links(self.links)
         ids = [lk.id for lk in links]
         known = set(ids)
-        tps = tuple(TurningPair.from_data(t, f"turning pair {i + 1}") for i, t in enumerate(self.turning_pairs or ()))
-        gps = tuple(GearPair.from_data(g, f"gear pair {i + 1}") for i, g in enumerate(self.gear_pairs or ()))
+        tps = tuple(TurningPair.from_data(t, f"turning pair {i + 1}")
+                    for i, t in enumerate(_seq(self.turning_pairs, "mechanism", "turning_pairs")))
+        gps = tuple(GearPair.from_data(g, f"gear pair {i + 1}")
+                    for i, g in enumerate(_seq(self.gear_pairs, "mechanism", "gear_pairs")))
+        for attr in ("description", "source"):
+            object.__setattr__(self, attr, _text(getattr(self, attr), "mechanism", attr))
+        if not isinstance(self.name, str):
+            object.__setattr__(self, "name", _text(self.name, "mechanism", "name") or "mechanism")
 
         def need(link, where):
             if link not in known:
@@ -456,7 +490,12 @@ class Mechanism:
                 value = parse_link_id(value, attr)
                 need(value, f"`{attr}`")
                 object.__setattr__(self, attr, value)
-        inputs = tuple(parse_link_id(x, "inputs") for x in (self.inputs or ()))
+        raw_inputs = self.inputs if self.inputs is not None else ()
+        if isinstance(raw_inputs, (str, int)) and not isinstance(raw_inputs, bool):
+            raw_inputs = (raw_inputs,)
+        if isinstance(raw_inputs, (bytes, Mapping)) or not isinstance(raw_inputs, Sequence):
+            raise DataFormatError(f"`inputs` must be a list of link ids, got {raw_inputs!r}")
+        inputs = tuple(parse_link_id(x, "inputs") for x in raw_inputs)
         for x in inputs:
             need(x, "`inputs`")
         object.__setattr__(self, "inputs", inputs)
@@ -493,14 +532,19 @@ class Mechanism:
 
     @staticmethod
     def _coerce_layout(layout, known) -> tuple:
-        items = layout.items() if isinstance(layout, Mapping) else layout
+        if isinstance(layout, Mapping):
+            items = list(layout.items())
+        elif isinstance(layout, tuple) and all(isinstance(i, tuple) and len(i) == 2 for i in layout):
+            items = list(layout)  # the stored form, from replace()
+        else:
+            raise DataFormatError(f"`layout` must be a mapping link -> [x, y], got {type(layout).__name__}")
         out = []
         for k, xy in items:
             k = parse_link_id(k, "layout")
             if k not in known:
                 raise UnknownLinkError(f"`layout` places unknown link {k}")
             x, y = _pair_of(xy, f"layout of link {k}", "position")
-            out.append((k, (float(x), float(y))))
+            out.append((k, (parse_real(x, f"layout of link {k}"), parse_real(y, f"layout of link {k}"))))
         return tuple(out)
 
     def _resolve_carrier(self, gp: GearPair, groups: CoaxialGroups) -> GearPair:
@@ -600,9 +644,9 @@ class Mechanism:
             value = data.get(key)
             if value is not None and (isinstance(value, (str, bytes, Mapping)) or not isinstance(value, Sequence)):
                 raise DataFormatError(f"mechanism: `{key}` must be a list, got {type(value).__name__}")
-        inputs = data.get("inputs") or ()
-        if isinstance(inputs, (int, str)):
-            inputs = (inputs,)
+        inputs = data.get("inputs")
+        if isinstance(inputs, list):
+            inputs = tuple(inputs)
         return cls(
             links=data["links"],
             turning_pairs=tuple(data.get("turning_pairs") or ()),
@@ -611,7 +655,7 @@ class Mechanism:
             description=data.get("description"),
             source=data.get("source"),
             ground=data.get("ground"),
-            inputs=tuple(inputs),
+            inputs=inputs,
             layout=data.get("layout"),
         )
 
