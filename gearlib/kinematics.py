@@ -73,12 +73,12 @@ class Constraints:
         if ground is None:
             raise InputError(f"choose a ground link for {mech.name!r} (ground=...); links are {list(mech.link_ids)}")
         ground = mech.resolve(ground, "ground")
-        held = tuple(mech.resolve(h, "held link") for h in (held or ()))
+        held = tuple(mech.resolve(h, "held link") for h in held) if held else ()
         for h in held:
             if h == ground:
                 raise ConstraintError(f"link {h} is the ground and also held; the ground is already fixed")
         joined_out = []
-        for pair in joined or ():
+        for pair in joined if joined else ():
             if isinstance(pair, (str, bytes)) or not isinstance(pair, Sequence) or len(pair) != 2:
                 raise DataFormatError(f"joined links must be pairs (u, v), got {pair!r}")
             u, v = (mech.resolve(x, "joined link") for x in pair)
@@ -104,6 +104,8 @@ class Constraints:
                 if not symbolic_inputs:
                     raise InputError(f"{where}: give its speed, e.g. inputs={{{u!r}: 1}}")
                 value = omega(u) if v == ground else omega(u, v)
+            elif type(value) in (int, float, Fraction) and _finite(value):
+                pass  # a plain number: kept as it is (read exactly by the exact solvers)
             else:
                 value = parse_expr(value, where)
                 if value.free_symbols and not symbolic_inputs:
@@ -116,6 +118,8 @@ class Constraints:
 
     @staticmethod
     def _input_items(mech, inputs):
+        if type(inputs) is dict:
+            return list(inputs.items())
         if inputs is None:
             inputs = mech.inputs
         if isinstance(inputs, Mapping):
@@ -128,6 +132,8 @@ class Constraints:
 
     @staticmethod
     def _input_key(mech, key, ground):
+        if type(key) is int and key in mech.index:  # the common case, fast
+            return key, ground
         if isinstance(key, str) and "/" in key:
             u, v = key.split("/", 1)
         elif isinstance(key, tuple) and len(key) == 2:
@@ -152,6 +158,28 @@ class Constraints:
 
     def describe_input(self, u, v) -> str:
         return f"{u}" if v == self.ground else f"{u}/{v}"
+
+
+def _finite(x) -> bool:
+    return x == x and x not in (float("inf"), float("-inf"))
+
+
+def _as_fraction(v):
+    """The exact rational value of an input speed, or None."""
+    if isinstance(v, Fraction):
+        return v
+    if type(v) is int:
+        return Fraction(v)
+    if type(v) is float:
+        return Fraction(repr(v))
+    return to_fraction(v)
+
+
+def _as_expr(v) -> sympy.Expr:
+    """An input speed as an exact sympy expression (floats by their decimal form)."""
+    if isinstance(v, sympy.Basic):
+        return v
+    return parse_expr(v, "input")
 
 
 def _gear_rows(mech: Mechanism, ratio_of):
@@ -344,7 +372,7 @@ def _solve_echelon(mech, cons: Constraints, field, gear_rows, m) -> tuple[list, 
 def _exact(mech, cons: Constraints) -> tuple[list, int]:
     m = len(mech.links)
     fracs = {id(gp): to_fraction(gp.e) for gp in mech.gear_pairs}
-    values = [to_fraction(v) for _, _, v in cons.inputs]
+    values = [_as_fraction(v) for _, _, v in cons.inputs]
     if all(f is not None for f in fracs.values()) and all(v is not None for v in values):
         cons_f = Constraints(cons.mechanism, cons.ground, cons.held, cons.joined,
                              tuple((u, v, f) for (u, v, _), f in zip(cons.inputs, values)))
@@ -355,7 +383,7 @@ def _exact(mech, cons: Constraints) -> tuple[list, int]:
 
 def _domain_solve(mech, cons, ratio_of, m):
     ratios = [ratio_of(gp) for gp in mech.gear_pairs]
-    values = [v for _, _, v in cons.inputs]
+    values = [_as_expr(v) for _, _, v in cons.inputs]
     field, elems = _linalg.domain_for(ratios + values)
     conv = dict(zip(range(len(ratios)), elems[: len(ratios)]))
     pos = {id(gp): i for i, gp in enumerate(mech.gear_pairs)}
@@ -390,75 +418,149 @@ def _without_pairs(mech, kept):
     return new
 
 
-def _numeric_matrix(mech, cons):
-    """Dense ``A x = b`` in floating point (complex when a ratio is complex)."""
+def _coo(mech, cons):
+    """The system ``A x = b`` as COO triplets (gear rows, constraint rows, input rows last).
+
+    Returns ``(rows, cols, data, shape, b, dtype)``; complex when a gear ratio or an input is.
+    """
     m = len(mech.links)
     ratios = [gp.e_value for gp in mech.gear_pairs]
     vals = [_to_complex(v) for _, _, v in cons.inputs]
     is_complex = any(r.imag != 0 for r in ratios) or any(v.imag != 0 for v in vals)
     dtype = complex if is_complex else float
-    rows = list(cons.rows())
-    n_rows = len(ratios) + len(rows)
-    A = np.zeros((n_rows, m), dtype=dtype)
-    b = np.zeros(n_rows, dtype=dtype)
     ix = mech.index
-    if ratios:
-        ia = np.fromiter((ix[gp.gears[0]] for gp in mech.gear_pairs), int, len(ratios))
-        ib = np.fromiter((ix[gp.gears[1]] for gp in mech.gear_pairs), int, len(ratios))
-        ic = np.fromiter((ix[gp.carrier] for gp in mech.gear_pairs), int, len(ratios))
-        e = np.array(ratios if is_complex else [r.real for r in ratios], dtype=dtype)
-        r = np.arange(len(ratios))
-        np.add.at(A, (r, ib), 1)
-        np.add.at(A, (r, ia), -e)
-        np.add.at(A, (r, ic), e - 1)
-    k = len(ratios)
+    n = len(ratios)
+    ia = np.fromiter((ix[gp.gears[0]] for gp in mech.gear_pairs), np.int64, n)
+    ib = np.fromiter((ix[gp.gears[1]] for gp in mech.gear_pairs), np.int64, n)
+    ic = np.fromiter((ix[gp.carrier] for gp in mech.gear_pairs), np.int64, n)
+    e = np.array(ratios if is_complex else [r.real for r in ratios], dtype=dtype)
+    r = np.arange(n)
+    rows, cols, data = [r, r, r], [ib, ia, ic], [np.ones(n, dtype=dtype), -e, e - 1]
+    b = np.zeros(n, dtype=dtype)
+    extra_r, extra_c, extra_d, extra_b = [], [], [], []
     vi = iter(vals)
-    for i, (row, _rhs, tag) in enumerate(rows):
+    for i, (row, _rhs, tag) in enumerate(cons.rows()):
         for c, v in row.items():
-            A[k + i, c] += v
-        if tag[0] == "input":
-            val = next(vi)
-            b[k + i] = val if is_complex else val.real
+            extra_r.append(n + i)
+            extra_c.append(c)
+            extra_d.append(v)
+        val = next(vi) if tag[0] == "input" else 0
+        extra_b.append(val if is_complex else val.real)
+    rows.append(np.array(extra_r, dtype=np.int64))
+    cols.append(np.array(extra_c, dtype=np.int64))
+    data.append(np.array(extra_d, dtype=dtype))
+    b = np.concatenate([b, np.array(extra_b, dtype=dtype)])
+    shape = (n + len(extra_b), m)
+    return np.concatenate(rows), np.concatenate(cols), np.concatenate(data), shape, b, dtype
+
+
+def _numeric_matrix(mech, cons):
+    """The dense ``A x = b`` of the Willis and constraint rows (the LAPACK baseline's input)."""
+    rows, cols, data, shape, b, dtype = _coo(mech, cons)
+    A = np.zeros(shape, dtype=dtype)
+    np.add.at(A, (rows, cols), data)
     return A, b
 
 
-def _numeric(mech, cons):
-    import scipy.linalg
+_PLAN_CACHE_SIZE = 32
 
-    A, b = _numeric_matrix(mech, cons)
-    if A.shape[0] == A.shape[1]:
+
+def _numeric(mech, cons):
+    """Floating-point speeds through the speed-ratio matrix ``Omega_0`` of these constraints.
+
+    ``Omega_0`` (links x inputs) is computed once per mechanism and set of constraint links by
+    one sparse (or, for small mechanisms, dense) LU factorisation, and cached on the
+    mechanism; each call is then one matrix-vector product with the input speeds. When the
+    system is not square (redundant gear pairs) or singular, the null-space method decides
+    the degrees of freedom and explains what is wrong with the inputs.
+    """
+    key = (cons.ground, cons.held, cons.joined, tuple((u, v) for u, v, _ in cons.inputs))
+    cache = mech.__dict__.setdefault("_speed_plans", {})
+    plan = cache.get(key)
+    if plan is None:
+        plan = _numeric_plan(mech, cons)
+        if len(cache) >= _PLAN_CACHE_SIZE:
+            cache.pop(next(iter(cache)))
+        cache[key] = plan
+    values = [v if type(v) in (int, float) else _to_complex(v) for _, _, v in cons.inputs]
+    if plan.dtype != complex and any(type(v) is complex and v.imag for v in values):
+        values = np.array(values, dtype=complex)
+    return _clean(plan @ np.asarray(values)), len(cons.inputs)
+
+
+def _numeric_plan(mech, cons) -> np.ndarray:
+    rows, cols, data, shape, _, dtype = _coo(mech, cons)
+    m = shape[1]
+    k = len(cons.inputs)
+    if shape[0] == m and k:
+        rhs = np.zeros((m, k), dtype=dtype)
+        rhs[m - k + np.arange(k), np.arange(k)] = 1  # input rows come last
         try:
             with warnings.catch_warnings():
-                warnings.simplefilter("error", scipy.linalg.LinAlgWarning)
-                x = scipy.linalg.solve(A, b, check_finite=False)
-            return _clean(x), len(cons.inputs)
-        except (np.linalg.LinAlgError, scipy.linalg.LinAlgWarning):
+                warnings.simplefilter("error")
+                if m > 64:
+                    import scipy.sparse
+                    import scipy.sparse.linalg
+
+                    A = scipy.sparse.csc_matrix((data, (rows, cols)), shape=shape)
+                    omega0 = scipy.sparse.linalg.splu(A).solve(rhs)
+                else:
+                    A = np.zeros(shape, dtype=dtype)
+                    np.add.at(A, (rows, cols), data)
+                    omega0 = np.linalg.solve(A, rhs)
+            scale = max(1.0, float(np.abs(omega0).max()))
+            if np.all(np.isfinite(omega0)) and np.abs(A @ omega0 - rhs).max() <= 1e-9 * scale:
+                return omega0
+        except (np.linalg.LinAlgError, RuntimeError, Warning):
             pass
-    # not square, or singular: find the rank properly (and explain, if the inputs are wrong)
-    return _nullspace(mech, cons)
+    # not square, or singular: the null space finds the degrees of freedom, checks the inputs
+    ix = mech.index
+    K, dof = _constrained_null_space(mech, cons)
+    if k != dof:
+        raise InputError(_count_message(mech, cons, dof))
+    if dof == 0:
+        return np.zeros((m, 0))
+    R = np.array([K[ix[u]] - K[ix[v]] for u, v, _ in cons.inputs])
+    s = np.linalg.svd(R, compute_uv=False)
+    if s[-1] <= 1e-10 * max(1.0, s[0]):
+        names = ", ".join(cons.describe_input(u, v) for u, v, _ in cons.inputs)
+        raise InputError(
+            f"inputs {names} are not independent: together they fix fewer than {dof} freedoms. "
+            "Choose other input links"
+        )
+    omega0 = K @ np.linalg.inv(R)
+    if np.abs(omega0.imag).max(initial=0.0) <= 1e-12 * max(1.0, np.abs(omega0).max(initial=0.0)):
+        omega0 = omega0.real
+    return omega0
 
 
-def _nullspace(mech, cons):
+def _constrained_null_space(mech, cons):
+    """Null space of Penaud's M with the ground, held and joined rows; and its dimension."""
     from .adjacency import adjacency_matrix, null_space
 
     M = adjacency_matrix(mech)
     rows = [r for r in cons.rows() if r[2][0] != "input"]
-    m = len(mech.links)
-    C = np.zeros((len(rows), m))
+    C = np.zeros((len(rows), len(mech.links)))
     for i, (row, _, _) in enumerate(rows):
         for c, v in row.items():
             C[i, c] = v
     K = null_space(np.vstack([M, C]) if M.size else C)
-    dof = K.shape[1]
+    return K, K.shape[1]
+
+
+def _nullspace(mech, cons):
+    """Penaud and Alazard's method: the null space of the complex-weighted adjacency matrix
+    with the constraint rows, normalised to the inputs."""
+    K, dof = _constrained_null_space(mech, cons)
     if len(cons.inputs) != dof:
         raise InputError(_count_message(mech, cons, dof))
     if dof == 0:
-        return [0.0] * m, 0
+        return [0.0] * len(mech.links), 0
     ix = mech.index
     R = np.zeros((dof, dof), dtype=K.dtype)
     vals = np.zeros(dof, dtype=complex)
     for i, (u, v, value) in enumerate(cons.inputs):
-        R[i] = K[ix[u]] - (K[ix[v]] if v != cons.ground else 0)
+        R[i] = K[ix[u]] - K[ix[v]]
         vals[i] = _to_complex(value)
     s = np.linalg.svd(R, compute_uv=False)
     if s[-1] <= 1e-10 * max(1.0, s[0]):
@@ -473,11 +575,15 @@ def _nullspace(mech, cons):
 def _clean(x) -> list:
     """Floating-point speeds as Python numbers: round-off below 1e-12 of the largest speed
     becomes 0, and complex values with no imaginary part become floats."""
-    x = np.asarray(x, dtype=complex)
+    x = np.asarray(x)
     scale = 1e-12 * max(1.0, float(np.abs(x).max(initial=0.0)))
-    x.real[np.abs(x.real) < scale] = 0.0
-    x.imag[np.abs(x.imag) < scale] = 0.0
-    return [complex(z) if z.imag != 0 else float(z.real) for z in x]
+    if not np.iscomplexobj(x):
+        return np.where(np.abs(x) < scale, 0.0, x).tolist()
+    re = np.where(np.abs(x.real) < scale, 0.0, x.real)
+    im = np.where(np.abs(x.imag) < scale, 0.0, x.imag)
+    if not im.any():
+        return re.tolist()
+    return [complex(a, b) if b else a for a, b in zip(re.tolist(), im.tolist())]
 
 
 _SOLVERS = {"exact": _exact, "symbolic": _symbolic, "nullspace": _nullspace, "numeric": _numeric}

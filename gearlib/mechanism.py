@@ -712,6 +712,8 @@ class Mechanism:
 
     def resolve(self, link_id, what: str = "link"):
         """Normalise a link id given by a user; raise :class:`UnknownLinkError` if there is none."""
+        if type(link_id) in (int, str) and link_id in self.index:  # the common case, fast
+            return link_id
         try:
             key = parse_link_id(link_id, what)
         except DataFormatError:
