@@ -45,8 +45,30 @@ from .plot import draw_graph, plot_speeds
 # --- chapter 2: kinematic units (gearlib/units.py) -------------------------------
 # --- chapter 3: unit-by-unit gains (gearlib/gains.py, gearlib/robots.py) ----------
 # --- chapter 4: complex adjacency, frequencies (gearlib/adjacency.py, gearlib/frequencies.py)
+from .adjacency import (
+    constraint_rows,
+    direction,
+    reduced_basis,
+    same_subspace,
+    show_link_table,
+    show_matrix,
+)
+from .cornering import cornering_explorer, plot_cornering, wheel_speeds
+from .frequencies import (
+    BearingFrequencies,
+    FrequencyRow,
+    FrequencyTable,
+    bearing_frequencies,
+    frequency_table,
+    load_bearings,
+    plot_spectrum,
+    with_bearings,
+)
 # --- chapter 5: Davies' efficiency (gearlib/davies/) ------------------------------
 # --- chapter 6: differential synthesis (gearlib/atlas.py, gearlib/synthesis.py) ---
+from . import atlas, synthesis
+from .synthesis import identify, terminal_constraint
+from .dgm_view import dgm_explorer, plot_dgm, plot_identification
 
 __version__ = "0.1.0"
 
@@ -66,8 +88,12 @@ __all__ = [
     # chapter 2: kinematic units
     # chapter 3: unit-by-unit gains
     # chapter 4: complex adjacency, frequencies
+    "reduced_basis", "same_subspace", "constraint_rows", "direction", "show_link_table", "show_matrix",
+    "frequency_table", "FrequencyTable", "FrequencyRow", "bearing_frequencies", "BearingFrequencies",
+    "plot_spectrum", "load_bearings", "with_bearings", "wheel_speeds", "cornering_explorer", "plot_cornering",
     # chapter 5: Davies' efficiency
     # chapter 6: differential synthesis
+    "atlas", "synthesis", "terminal_constraint", "identify", "plot_dgm", "plot_identification", "dgm_explorer",
     # errors
     "GearlibError", "MechanismError", "DataFormatError", "UnknownLinkError", "DuplicateEdgeError",
     "SelfMeshError", "ToothNumberError", "CarrierError", "AxisError", "DisconnectedError",

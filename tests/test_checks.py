@@ -26,8 +26,22 @@ ANSWERS = {
     # ---------------------------------------------------------------- 02 kinematic units
     # ---------------------------------------------------------------- 03 unit-by-unit gains
     # ---------------------------------------------------------------- 04 complex adjacency
+    "adjacency_planet_ratio": ("5/2*exp(I*pi/3)", [-2.5, 2.5, "5/2*exp(I*pi/4)", "2/5*exp(-I*pi/3)",
+                                                   "-5/2*exp(I*pi/3)", 1.25]),
+    "adjacency_mesh_frequency": (450, [600, 300, 1800, -450, 15]),
+    "adjacency_planet_tooth_frequency": (15, [10, 450, 5, 20, -15]),
+    "adjacency_outer_ring_frequency": (54, [36, 81, 67.5, 135, "-54"]),
     # ---------------------------------------------------------------- 05 Davies efficiency
     # ---------------------------------------------------------------- 06 differential synthesis
+    "synth_ground_links": ([1, 3, 4, 6], [[1, 3, 4], [1, 3, 4, 6, 7], "4", [2, 5]]),
+    "synth_redundant_links": ({1, 2, 6}, [[1, 2], [5], (1, 2, 5, 6)]),
+    "synth_differential_constraint": (
+        "(e_4_2 - e_4_3)*omega_1 + e_4_3*e_5_1*omega_2 - e_4_2*e_5_1*omega_3",
+        ["(e_4_3 - e_4_2)*omega_1 + e_4_3*e_5_1*omega_2 - e_4_2*e_5_1*omega_3", "omega_1 + omega_2", [0, 1, 1],
+         "e_4_2*omega_1 - e_5_1*omega_3"],
+    ),
+    "synth_seven_link_dgms": (4, [50, 1, 20]),
+    "synth_six_link_rotation_graphs": (2, [3, 12, 45]),
 }
 
 

@@ -1,0 +1,274 @@
+"""Differential synthesis reproduces Chen, Yao and Lee (2003): eqs. (3), (7), (8), (10),
+(11) and (9) corrected (erratum CYL-E1), every row of Table 1, and the eight-link cases
+1-7 of Section 4.1. Expected values are typed from the paper (gamma_{a,b} written e_a_b),
+or computed independently with numpy from random numeric gear ratios.
+"""
+
+import itertools
+import random
+
+import numpy as np
+import pytest
+import sympy
+
+import gearlib as gl
+from gearlib import synthesis
+
+e = sympy.Symbol
+
+
+def w(k):
+    return sympy.Symbol(f"omega_{k}")
+
+
+def coeffs(expr, terminals):
+    expr = sympy.expand(expr)
+    return [expr.coeff(w(t)) for t in terminals]
+
+
+def same(constraint, printed):
+    return synthesis.proportional(constraint.coefficients, coeffs(printed, constraint.terminals))
+
+
+GKC7 = gl.catalog.load("cyl_gkc_5_7_2")
+GKC8 = gl.catalog.load("cyl_gkc_8")
+DIFF = gl.catalog.load("cyl_standard_differential")
+
+
+# --------------------------------------------------------------------- equations of the paper
+def test_eq_3_standard_differential():
+    c = synthesis.terminal_constraint(DIFF, (1, 2, 3), ground=0)
+    g32 = e("e_4_2") / e("e_4_3")  # eq. (4)
+    printed = (g32 - 1) * w(1) + e("e_5_1") * w(2) - e("e_5_1") * g32 * w(3)
+    assert c.count == 1 and same(c, printed) and c.admissible
+
+
+def test_eq_2_circuit_matrix():
+    A, cols = synthesis.circuit_matrix(DIFF, ground=0)
+    g42, g43, g51 = e("e_4_2"), e("e_4_3"), e("e_5_1")
+    printed = sympy.Matrix([[0, 1, 0, -g42, g42 - 1], [0, 0, 1, -g43, g43 - 1], [1, 0, 0, 0, -g51]])
+    assert cols == (1, 2, 3, 4, 5) and A == printed
+
+
+def test_eq_7_nd3_7_1():
+    c = synthesis.terminal_constraint(GKC7, (5, 6, 7), ground=4)
+    g = {k: e(f"e_{k[0]}_{k[1]}") for k in ("51", "62", "21", "73")}
+    printed = g["51"] * w(5) - g["62"] * g["21"] * w(6) + g["73"] * (g["62"] * g["21"] - 1) * w(7)
+    assert same(c, printed) and c.admissible and c.redundant == ()
+
+
+def test_eq_8_terminals_1_3_6():
+    c = synthesis.terminal_constraint(GKC7, (1, 3, 6), ground=4)
+    p = e("e_6_2") * e("e_2_1")
+    assert same(c, w(1) + (p - 1) * w(3) - p * w(6))
+    assert c.redundant == (5, 7) and not c.admissible  # "links 5 and 7 are redundant"
+
+
+G41, G50, G63, G74, G76 = (e(f"e_{k}") for k in ("4_1", "5_0", "6_3", "7_4", "7_6"))
+MIDDLE = G41 * G50 * G74 - G41 * G63 * G74 + G41 * G63 * G76 - G50 * G63 * G76
+
+
+def test_eq_9_corrected():
+    c = synthesis.terminal_constraint(GKC8, (1, 2, 3), ground=0)
+    corrected = G50 * G63 * G76 * w(1) + MIDDLE * w(2) - G41 * G50 * G74 * w(3)
+    assert same(c, corrected) and c.admissible
+    printed = G50 * G63 * e("e_7_2") * w(1) + MIDDLE * w(2) - G41 * G50 * G74 * w(3)  # CYL-E1: gamma_72
+    assert not same(c, printed)
+    assert not any(set(gp.gears) == {7, 2} for gp in GKC8.gear_pairs)
+
+
+def test_eq_10_and_11():
+    c10 = synthesis.terminal_constraint(GKC8, (0, 2, 3), ground=1)
+    assert same(c10, (G41 * G63 * G74 - G41 * G63 * G76) * w(0) + MIDDLE * w(2) - G41 * G50 * G74 * w(3))
+    c11 = synthesis.terminal_constraint(GKC8, (0, 1, 3), ground=2)
+    assert same(c11, (G41 * G63 * G74 - G41 * G63 * G76) * w(0) + G50 * G63 * G76 * w(1) - G41 * G50 * G74 * w(3))
+
+
+# --------------------------------------------------------------------- Table 1 and the procedure
+TABLE_1 = [  # ground, terminals, redundant links, identification result (typed from CYL Table 1)
+    (1, (3, 4, 6), (5, 7), "—"),
+    (3, (1, 2, 4), (5, 6, 7), "—"),
+    (3, (1, 2, 6), (4, 5, 7), "—"),
+    (3, (1, 4, 6), (5, 7), "—"),
+    (3, (2, 4, 6), (1, 5, 7), "—"),
+    (4, (1, 3, 5), (2, 6, 7), "—"),
+    (4, (1, 3, 6), (5, 7), "—"),
+    (4, (1, 3, 7), (2, 5, 6), "—"),
+    (4, (1, 5, 6), (2, 3, 7), "—"),
+    (4, (1, 5, 7), (2, 3, 6), "—"),
+    (4, (1, 6, 7), (5,), "—"),
+    (4, (3, 5, 6), (7,), "—"),
+    (4, (3, 5, 7), (1, 2, 6), "—"),
+    (4, (3, 6, 7), (1, 2, 5), "—"),
+    (4, (5, 6, 7), (), "admissible"),
+    (6, (1, 3, 4), (5, 7), "—"),
+]
+
+
+def test_table_1_is_reproduced_row_by_row():
+    ident = synthesis.identify(GKC7)
+    assert ident.n_terminals == 3 and ident.grounds == (1, 3, 4, 6)  # Step 1
+    rows = [(r["ground"], r["terminals"], r["redundant"], r["result"]) for r in ident.table()]
+    assert rows == TABLE_1
+    assert [(c.ground, c.terminals) for c in ident.admissible] == [(4, (5, 6, 7))]
+
+
+def test_step_1_adjacency_of_gkc_5_7_2():
+    adj = synthesis.adjacency(GKC7)
+    assert adj[1] == (3, 4, 6) and adj[3] == (1, 2, 4, 6) and adj[4] == (1, 3, 5, 6, 7) and adj[6] == (1, 3, 4)
+
+
+def test_n3_screening_implies_redundancy():
+    for c in synthesis.identify(GKC7).candidates:
+        assert set(c.n3_failures) <= set(c.redundant)
+
+
+def test_eight_link_cases_1_to_7():
+    ident = synthesis.identify(GKC8)
+    assert ident.grounds == (0, 1, 2, 3, 4, 5, 6)  # "links 0, 1, 2, 3, 4, 5 and 6 can be selected as the ground"
+    admissible = [(c.ground, c.terminals) for c in ident.candidates if c.admissible]
+    assert admissible == [(0, (1, 2, 3)), (1, (0, 2, 3)), (2, (0, 1, 3)), (3, (0, 1, 2))]
+    assert ident.duplicates == {(3, (0, 1, 2)): (1, (0, 2, 3))}  # case 4: isomorphic with ND3-8-19
+    assert [(c.ground, c.terminals) for c in ident.admissible] == admissible[:3]
+    by_ground = {g: [c for c in ident.candidates if c.ground == g] for g in ident.grounds}
+    assert len(by_ground[2]) == 20  # case 3: "among the 20 sets of terminals"
+    assert [c.terminals for c in by_ground[4]] == [(2, 5, 6)] and [c.terminals for c in by_ground[6]] == [(2, 4, 5)]
+    # case 6 and erratum CYL-N1: 7 is pivoted on 5 too, so four triples; 4, 6, 7 gives two constraints
+    assert [c.terminals for c in by_ground[5]] == [(2, 4, 6), (2, 4, 7), (2, 6, 7), (4, 6, 7)]
+    assert next(c for c in by_ground[5] if c.terminals == (4, 6, 7)).count == 2
+    for g in (4, 5, 6):  # cases 5-7: links 0, 1 and 3 are redundant
+        assert all({0, 1, 3} <= set(c.redundant) for c in by_ground[g])
+
+
+def test_seven_link_atlas_gives_nd3_7_1_among_its_dgms():
+    found = synthesis.synthesize(7)
+    assert len(found) == 4  # CYL Fig. 3 shows ND3-7-1 ... (at least ND3-7-4 is named); the figure is lost
+    target = gl.atlas.canonical_graph(GKC7, ground=4, terminals=(5, 6, 7))
+    hits = [chain.name for chain, c in found
+            if gl.atlas.isomorphic(gl.atlas.canonical_graph(chain, ground=c.ground, terminals=c.terminals), target)]
+    assert len(hits) == 1
+    assert synthesis.synthesize(6) == ()
+
+
+# --------------------------------------------------------------------- independent numeric cross-checks
+def _numeric_terminal_space(mech, ground, terminals, ratios):
+    """Basis of the terminal speeds of every motion (numpy SVD), for numeric ratios."""
+    rows = []
+    for gp in mech.gear_pairs:
+        (a, b), c = gp.gears, gp.carrier
+        r = np.zeros(len(mech.links))
+        r[mech.index[b]] += 1
+        r[mech.index[a]] -= ratios[gp.gears]
+        r[mech.index[c]] += ratios[gp.gears] - 1
+        rows.append(r)
+    ground_row = np.zeros(len(mech.links))
+    ground_row[mech.index[ground]] = 1
+    m = np.array(rows + [ground_row])
+    _, s, vt = np.linalg.svd(m)
+    null = vt[int((s > 1e-10).sum()):].T
+    return null[[mech.index[t] for t in terminals]]
+
+
+@pytest.mark.parametrize(("mech", "ground"), [(GKC7, 4), (GKC7, 3), (GKC8, 2), (GKC8, 5), (DIFF, 0)])
+def test_constraints_agree_with_numeric_motions(mech, ground):
+    rnd = random.Random(3)
+    ratios = {gp.gears: rnd.choice([-1, 1]) * rnd.uniform(0.3, 3) for gp in mech.gear_pairs}
+    subs = {gp.symbol: ratios[gp.gears] for gp in mech.gear_pairs}
+    for terms in itertools.combinations(synthesis.adjacency(mech)[ground], 3):
+        c = synthesis.terminal_constraint(mech, terms, ground=ground)
+        space = _numeric_terminal_space(mech, ground, terms, ratios)
+        assert c.count == 3 - np.linalg.matrix_rank(space, tol=1e-9)  # independent constraints
+        for row in c.rows:  # every motion satisfies every constraint
+            vec = np.array([complex(sympy.sympify(v).subs(subs)) for v in row])
+            assert np.abs(vec @ space).max() < 1e-8
+
+
+@pytest.mark.parametrize(("ground", "terms"), [(4, (3, 5, 7)), (4, (1, 6, 7)), (3, (2, 4, 6)), (4, (5, 6, 7))])
+def test_redundant_links_do_not_change_the_terminal_relation(ground, terms):
+    rnd = random.Random(11)
+    base = {gp.gears: rnd.choice([-1, 1]) * rnd.uniform(0.3, 3) for gp in GKC7.gear_pairs}
+    c = synthesis.terminal_constraint(GKC7, terms, ground=ground)
+    before = _numeric_terminal_space(GKC7, ground, terms, base)
+    for x in c.non_terminals:
+        changed = {k: (v * 1.7 if x in k or x == GKC7.gear_pair(*k)[0].carrier else v) for k, v in base.items()}
+        after = _numeric_terminal_space(GKC7, ground, terms, changed)
+        same_space = np.linalg.matrix_rank(np.hstack([before, after]), tol=1e-8) == np.linalg.matrix_rank(before, tol=1e-8)
+        assert same_space == (x in c.redundant), x
+
+
+def test_proportional():
+    a, b = e("e_1_2"), e("e_2_3")
+    assert synthesis.proportional([a, 1, -b], [2 * a, 2, -2 * b])
+    assert synthesis.proportional([a, 1, -b], [a / b, 1 / b, -1])
+    assert not synthesis.proportional([a, 1, -b], [a, 1, b])
+    assert not synthesis.proportional([0, 0], [0, 0]) and not synthesis.proportional([1, 2], [1, 2, 3])
+
+
+# --------------------------------------------------------------------- bad input
+def test_bad_terminals_and_grounds():
+    with pytest.raises(gl.InputError, match="ground"):
+        synthesis.terminal_constraint(GKC7, (4, 5, 6), ground=4)
+    with pytest.raises(gl.InputError, match="twice"):
+        synthesis.terminal_constraint(GKC7, (5, 5, 6), ground=4)
+    with pytest.raises(gl.UnknownLinkError, match="terminal 9"):
+        synthesis.terminal_constraint(GKC7, (5, 9), ground=4)
+    with pytest.raises(gl.UnknownLinkError, match="ground"):
+        synthesis.terminal_constraint(GKC7, (5, 6), ground=12)
+    with pytest.raises(gl.InputError, match="at least one terminal"):
+        synthesis.terminal_constraint(GKC7, (), ground=4)
+    with pytest.raises(gl.DataFormatError, match="gl.Mechanism"):
+        synthesis.terminal_constraint("cyl_gkc_5_7_2", (5, 6, 7), ground=4)
+
+
+def test_identify_refuses_what_is_not_a_chain_or_the_wrong_dof():
+    with pytest.raises(gl.InputError, match="not a geared kinematic chain: turning pairs"):
+        synthesis.identify(gl.catalog.car_differential())
+    with pytest.raises(gl.InputError, match="needs a chain of 3 dof"):
+        synthesis.identify(GKC7, 4)
+    with pytest.raises(gl.InputError, match="at least 2"):
+        synthesis.identify(GKC7, True)
+
+
+def test_single_terminal_constraint_and_grounds_option():
+    c = synthesis.terminal_constraint(GKC7, 5, ground=4)  # one terminal of a 2-dof chain: free
+    assert c.count == 0 and c.equation is None and not c.admissible
+    ident = synthesis.identify(GKC7, grounds=[4])
+    assert ident.grounds == (4,) and len(ident.candidates) == 10
+
+
+# --------------------------------------------------------------------- command line, drawings, widget
+def test_cli_dgm(capsys):
+    from gearlib.cli import main
+
+    assert main(["dgm", "cyl_gkc_8"]) == 0
+    out = capsys.readouterr().out
+    assert out.count("ground") == 4 and "ground 3" not in out.split("\n", 1)[1]
+    assert main(["dgm", "cyl_gkc_5_7_2", "--all", "--json"]) == 0
+    import json
+
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["assignments"]) == 16 and data["grounds"] == [1, 3, 4, 6]
+    assert [a["redundant"] for a in data["assignments"]] == [list(r[2]) for r in TABLE_1]
+    assert main(["dgm", "cyl_gkc_5_7_2", "--terminals", "4"]) == 2
+    assert "needs a chain of 3 dof" in capsys.readouterr().err
+
+
+def test_drawings_and_widget():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ident = synthesis.identify(GKC7)
+    fig, (ax1, ax2) = plt.subplots(1, 2)
+    assert gl.plot_identification(ident, ax=ax1) is ax1
+    assert gl.plot_dgm(ident.admissible[0], ax=ax2) is ax2
+    assert "ground 4" in ax2.get_title()
+    plt.close(fig)
+    ex = gl.dgm_explorer([GKC7, GKC8])
+    png = ex.update(chain=GKC7.name, ground=4, terminals=(5, 6, 7))
+    assert png.startswith(b"\x89PNG") and "admissible" in ex.text
+    ex.update(terminals=(1, 3, 6))
+    assert "redundant links 5, 7" in ex.text
+    ex.update(chain=GKC8.name)
+    assert ex.state["chain"] == GKC8.name and ex.state["ground"] == 2
