@@ -43,7 +43,20 @@ from .mobility import Mobility, dof
 from .plot import draw_graph, plot_speeds
 
 # --- chapter 2: kinematic units (gearlib/units.py) -------------------------------
+from . import propagation, unit_plot, unit_widgets, units
+from .fge import fundamental_geared_entities
+from .ku_types import ku_catalogue
+from .propagation import plan
+from .unit_plot import draw_fractionation, draw_ku_catalogue, draw_units
+from .unit_widgets import unit_explorer
+from .units import CommonLinkage, Fractionation, KinematicUnit, kinematic_units
 # --- chapter 3: unit-by-unit gains (gearlib/gains.py, gearlib/robots.py) ----------
+from . import gains, relation, robots, rules, transmission
+from .gains import local_gain
+from .relation import Propagation, propagate, unit_ratio
+from .robots import GearedRobot, geared_robot
+from .rules import derive_rule, match_rule
+from .transmission import shift_table
 # --- chapter 4: complex adjacency, frequencies (gearlib/adjacency.py, gearlib/frequencies.py)
 from .adjacency import (
     constraint_rows,
@@ -86,7 +99,12 @@ __all__ = [
     # random and large mechanisms (tests, benchmarks)
     "random_mechanism", "serial_train",
     # chapter 2: kinematic units
+    "units", "kinematic_units", "Fractionation", "KinematicUnit", "CommonLinkage", "fundamental_geared_entities",
+    "ku_catalogue", "plan", "propagation", "unit_plot", "draw_units", "draw_fractionation", "draw_ku_catalogue",
+    "unit_widgets", "unit_explorer",
     # chapter 3: unit-by-unit gains
+    "gains", "relation", "rules", "transmission", "robots", "propagate", "Propagation", "unit_ratio", "local_gain",
+    "derive_rule", "match_rule", "shift_table", "geared_robot", "GearedRobot",
     # chapter 4: complex adjacency, frequencies
     "reduced_basis", "same_subspace", "constraint_rows", "direction", "show_link_table", "show_matrix",
     "frequency_table", "FrequencyTable", "FrequencyRow", "bearing_frequencies", "BearingFrequencies",

@@ -24,7 +24,23 @@ ANSWERS = {
     "graph_differential_pinion": (-110, [22, 110, Fraction(-22, 5)]),
     "graph_humpage_ratio": (Fraction(17, 1176), [Fraction(5, 24), Fraction(1176, 17), Fraction(480, 1960)]),
     # ---------------------------------------------------------------- 02 kinematic units
+    "units_simpson": ([{3, 1, 5, 2}, {4, 1, 6, 3}], [[{1, 5, 2}, {1, 6, 3}], [{0, 1, 2, 3, 4, 5, 6}], [{3, 1, 5, 2}]]),
+    # names are typed with "_" for "-" here only because the test sympifies references ("K4-1S" is accepted too)
+    "unit_type_simpson": ("K4_1S", ["K4-1", "K5-2", "K4-2", "K3-1"]),
+    "linkage_wrist": ("coaxial_triangle", ["2-link chain", "triangle", "3"]),
+    "atlas_single_unit_chains": (7, [13, 10, 5]),
     # ---------------------------------------------------------------- 03 unit-by-unit gains
+    "gain_rule2": (Fraction(-18, 13), [Fraction(-5, 13), Fraction(18, 13), Fraction(-13, 18)]),
+    "propagation_fig1": (Fraction(-1, 6), [Fraction(-1, 2), Fraction(1, 3), Fraction(1, 6), -6]),
+    "third_gear": ("(e_1_7*e_7_8 - 1)*(e_2_3*e_3_5 - 1)/(e_1_6*e_2_3*e_3_5*e_6_2 - e_2_3*e_3_5 + 1)",
+                   ["e_1_7*e_7_8/(e_1_6*e_6_2)", "(e_1_7*e_7_8 - 1)/(e_1_6*e_6_2 - 1)",
+                    "(e_1_7*e_7_8 - 1)*(e_2_3*e_3_5 - 1)"]),
+    "structure_matrix": ([[1, 1, 1], [0, "-e_5_4*(e_1_6*e_6_5 - 1)", "e_9_8"],
+                          [0, "-e_3_7*e_5_4*(e_1_6*e_6_5 - 1)", "e_3_9*e_9_8"]],
+                         [[[1, 0, 0], [1, "-e_5_4*(e_1_6*e_6_5 - 1)", "-e_3_7*e_5_4*(e_1_6*e_6_5 - 1)"],
+                           [1, "e_9_8", "e_3_9*e_9_8"]],
+                          [[1, 1, 1], [0, "e_5_4", "e_9_8"], [0, "e_3_7*e_5_4", "e_3_9*e_9_8"]],
+                          [[1, 1], [0, "e_9_8"]]]),
     # ---------------------------------------------------------------- 04 complex adjacency
     "adjacency_planet_ratio": ("5/2*exp(I*pi/3)", [-2.5, 2.5, "5/2*exp(I*pi/4)", "2/5*exp(-I*pi/3)",
                                                    "-5/2*exp(I*pi/3)", 1.25]),

@@ -1,0 +1,63 @@
+"""``python -m gearlib gains FILE --ground G --input I --output O [--symbolic] [--json]``:
+the propagation path through the kinematic units and the global gain."""
+
+from __future__ import annotations
+
+import sympy
+
+from ..relation import propagate
+from ..kinematics import _to_complex, format_value
+from ..propagation import theta
+from . import load_mechanism, print_json
+from .speeds import add_common, constraints
+
+NAME = "gains"
+HELP = "the unit-by-unit propagation path from input(s) to output and the global gain"
+
+
+def add_arguments(p):
+    add_common(p)
+    p.add_argument("--input", action="append", required=True, metavar="LINK",
+                   help="input link (or U/V); repeat for each degree of freedom")
+    p.add_argument("--output", required=True, metavar="LINK", help="output link (or U/V)")
+    p.add_argument("--symbolic", action="store_true", help="also give the gain in the gear-ratio symbols e_a_b")
+    p.add_argument("--json", action="store_true", help="print steps, local gains and the relation as JSON")
+
+
+def _number(v):
+    if isinstance(v, sympy.Basic) and v.free_symbols:
+        return None
+    z = _to_complex(v)
+    return [z.real, z.imag]
+
+
+def run(args) -> int:
+    mech = load_mechanism(args.file)
+    prop = propagate(mech, args.output, args.input, ground=args.ground, **constraints(args))
+    exact = prop.relation()
+    symbolic = prop.relation("symbolic") if (args.symbolic or mech.is_symbolic) else None
+    gains = prop.gains
+    if args.json:
+        out = {
+            "steps": [str(s) for s in prop.steps],
+            "expression": str(prop.expression()),
+            "local_gains": {str(g.symbol): {"unit": g.unit.name, "type": g.unit.label, "rule": g.rule,
+                                            "expression": str(g.expression)} for g in gains},
+            "relation": {f"{u}/{v}": {"value": _number(c), "exact": str(c)} for (u, v), c in exact.items()},
+        }
+        if symbolic is not None:
+            for (u, v), c in symbolic.items():
+                out["relation"][f"{u}/{v}"]["expression"] = str(c)
+        print_json(out)
+        return 0
+    for s in prop.steps:
+        print(s)
+    print(f"{theta(*prop.output)} = {sympy.sstr(prop.expression())}")
+    for g in gains:
+        rule = f"rule {g.rule}" if g.rule else "no rule"
+        print(f"  {g.symbol} = {sympy.sstr(g.expression)}  ({g.unit.name} {g.unit.label}, {rule})")
+    for (u, v), c in exact.items():
+        print(f"gain {theta(*prop.output)} / {theta(u, v)} = {format_value(c, 10)}")
+        if symbolic is not None:
+            print(f"  symbolic: {sympy.sstr(symbolic[(u, v)])}")
+    return 0
