@@ -39,7 +39,7 @@ from .graph import FundamentalCircuit, displacement_graph, fundamental_circuits,
 from .io import load, loads, save
 from .kinematics import Constraints, Solution, ratio, speeds
 from .mechanism import Bearing, GearPair, Link, Mechanism, TurningPair
-from .mobility import Mobility, dof
+from .mobility import Mobility, choose_inputs, dof
 from .plot import draw_graph, plot_speeds
 
 # --- chapter 2: kinematic units (gearlib/units.py) -------------------------------
@@ -91,7 +91,7 @@ __all__ = [
     # graph and equations (chapter 1)
     "to_networkx", "fundamental_circuits", "FundamentalCircuit", "displacement_graph",
     "willis_equations", "willis_matrix", "WillisEquation", "omega", "ratio_symbols",
-    "dof", "Mobility", "speeds", "ratio", "Solution", "Constraints",
+    "dof", "Mobility", "choose_inputs", "speeds", "ratio", "Solution", "Constraints",
     # Penaud and Alazard's matrix (chapters 1 and 4)
     "link_table", "adjacency_matrix", "null_space", "speed_ratio_matrix",
     # drawing

@@ -514,12 +514,19 @@ def _numeric_plan(mech, cons) -> np.ndarray:
         except (np.linalg.LinAlgError, RuntimeError, Warning):
             pass
     # not square, or singular: the null space finds the degrees of freedom, checks the inputs
-    ix = mech.index
+    return _nullspace_plan(mech, cons)
+
+
+def _nullspace_plan(mech, cons) -> np.ndarray:
+    """Penaud's speed-ratio matrix ``Omega_0 = K (R K)^-1`` for these inputs, where ``K`` spans
+    the null space of ``M`` with the constraint rows and ``R`` picks the input speeds; raises
+    InputError when the inputs are too few, too many, or not independent."""
     K, dof = _constrained_null_space(mech, cons)
-    if k != dof:
+    if len(cons.inputs) != dof:
         raise InputError(_count_message(mech, cons, dof))
     if dof == 0:
-        return np.zeros((m, 0))
+        return np.zeros((len(mech.links), 0))
+    ix = mech.index
     R = np.array([K[ix[u]] - K[ix[v]] for u, v, _ in cons.inputs])
     s = np.linalg.svd(R, compute_uv=False)
     if s[-1] <= 1e-10 * max(1.0, s[0]):
@@ -551,25 +558,9 @@ def _constrained_null_space(mech, cons):
 def _nullspace(mech, cons):
     """Penaud and Alazard's method: the null space of the complex-weighted adjacency matrix
     with the constraint rows, normalised to the inputs."""
-    K, dof = _constrained_null_space(mech, cons)
-    if len(cons.inputs) != dof:
-        raise InputError(_count_message(mech, cons, dof))
-    if dof == 0:
-        return [0.0] * len(mech.links), 0
-    ix = mech.index
-    R = np.zeros((dof, dof), dtype=K.dtype)
-    vals = np.zeros(dof, dtype=complex)
-    for i, (u, v, value) in enumerate(cons.inputs):
-        R[i] = K[ix[u]] - K[ix[v]]
-        vals[i] = _to_complex(value)
-    s = np.linalg.svd(R, compute_uv=False)
-    if s[-1] <= 1e-10 * max(1.0, s[0]):
-        names = ", ".join(cons.describe_input(u, v) for u, v, _ in cons.inputs)
-        raise InputError(
-            f"inputs {names} are not independent: together they fix fewer than {dof} freedoms. "
-            "Choose other input links"
-        )
-    return _clean(K @ np.linalg.solve(R, vals)), dof
+    omega0 = _nullspace_plan(mech, cons)
+    values = np.array([_to_complex(v) for _, _, v in cons.inputs], dtype=complex)
+    return _clean(omega0 @ values), len(cons.inputs)
 
 
 def _clean(x) -> list:

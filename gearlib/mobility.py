@@ -28,7 +28,7 @@ from . import _linalg
 from ._parse import to_fraction
 from .mechanism import Mechanism
 
-__all__ = ["Mobility", "dof", "redundant_gear_pairs"]
+__all__ = ["Mobility", "dof", "redundant_gear_pairs", "choose_inputs"]
 
 
 @dataclass(frozen=True)
@@ -171,3 +171,26 @@ def dof(mech: Mechanism, ground=None, *, held=(), joined=()) -> Mobility:
         corrected = (jr - len(red_tp)) - (jg - len(redundant_gp)) - shift
         notes.append(f"Without them the pair rule gives {corrected}, the rank.")
     return Mobility(m, jr, jg, planar, count, rank_dof, red_tp, redundant_gp, locked, tuple(notes))
+
+
+def choose_inputs(mech: Mechanism, ground=None, *, candidates=None) -> list:
+    """Links that can be driven together as independent inputs, as many as the mechanism has
+    degrees of freedom: the first ones of *candidates* (default: every link in order) that
+    each remove one freedom when held.
+
+    >>> import gearlib as gl
+    >>> gl.choose_inputs(gl.catalog.car_differential(), ground=1)
+    [2, 3]
+    """
+    ground = mech.resolve(ground if ground is not None else (mech.ground if mech.ground is not None else mech.link_ids[0]))
+    n = dof(mech, ground).rank
+    chosen: list = []
+    for link in candidates if candidates is not None else mech.link_ids:
+        if len(chosen) == n:
+            break
+        link = mech.resolve(link)
+        if link == ground or link in chosen:
+            continue
+        if dof(mech, ground, held=chosen + [link]).rank == n - len(chosen) - 1:
+            chosen.append(link)
+    return chosen

@@ -194,17 +194,6 @@ def test_wrong_inputs_get_the_solvers_messages():
 
 
 # --------------------------------------------------------------------- random mechanisms
-def independent_inputs(m, rng):
-    n = int(gl.dof(m, 0))
-    chosen = []
-    for link in m.link_ids[1:]:
-        if int(gl.dof(m, 0, held=chosen + [link])) == n - len(chosen) - 1:
-            chosen.append(link)
-        if len(chosen) == n:
-            break
-    return chosen
-
-
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.integers(0, 10**6), st.integers(3, 12), st.integers(1, 2), st.sampled_from([0.0, 0.0, 0.5]))
 def test_propagation_equals_null_space_on_random_mechanisms(seed, n, dof, bevel):
@@ -213,7 +202,7 @@ def test_propagation_equals_null_space_on_random_mechanisms(seed, n, dof, bevel)
     except ValueError:
         return
     rng = np.random.default_rng(seed)
-    inputs = independent_inputs(m, rng)
+    inputs = gl.choose_inputs(m, 0)
     others = [x for x in m.link_ids if x not in inputs and x != 0]
     output = others[int(rng.integers(len(others)))] if others else inputs[-1]
     # a relative output when possible: a link relative to one coaxial with it
