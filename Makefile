@@ -1,6 +1,7 @@
-# Two commands set up a fresh machine from nothing (Python 3.11 and make):
-#   make book   build the HTML book into book/_build/html
-#   make test   run every test (lint, unit and doc tests, notebooks, book build)
+# Two commands set up a fresh machine from nothing (Python 3.11, make, and Node.js/npm for
+# the JavaScript the book ships, which make installs with apt-get where it can):
+#   make book   build the HTML book into book/_build/html and check its links
+#   make test   run every test (lint, unit and doc tests, notebooks, book build, browser)
 # Both create .venv from environment.txt when it is missing or out of date.
 
 SHELL := /bin/bash
@@ -19,15 +20,22 @@ export MPLBACKEND := Agg
 NOTEBOOKS := chapters exercises book/solutions
 LINTED := gearlib tests chapters exercises book benchmarks
 JB_FLAGS := --config book/_config.yml --toc book/_toc.yml --path-output book -W -n --keep-going
+# JavaScript the book ships so that it reads offline: pinned in book/vendor/package-lock.json,
+# installed by npm into book/vendor/node_modules (a cache, ignored by git) and staged in
+# book/vendor/_static, which Sphinx copies into book/_build/html/_static.
+VENDOR := book/vendor
+VENDOR_STAMP := $(VENDOR)/_static/.staged
+CHROMIUM ?= $(shell command -v chromium || command -v chromium-browser || true)
 
-.PHONY: help venv lint unit notebooks book build-book test lab bench strip clean
+.PHONY: help venv vendor lint unit notebooks book build-book browser chromium test lab bench strip clean
 
 help:
-	@echo "make book   build the HTML book into book/_build/html (creates .venv if needed)"
-	@echo "make test   lint, unit and doc tests, notebooks (nbval), book build"
-	@echo "make lab    open JupyterLab at the book's start"
-	@echo "make bench  speed benchmarks (benchmarks/)"
-	@echo "make strip  remove outputs from every notebook before committing"
+	@echo "make book     build the HTML book into book/_build/html (creates .venv if needed)"
+	@echo "make test     lint, unit and doc tests, notebooks (nbval), book build, browser test"
+	@echo "make lab      open JupyterLab at the book's start"
+	@echo "make browser  open every page of the built book in headless Chromium, offline"
+	@echo "make bench    speed benchmarks (benchmarks/)"
+	@echo "make strip    remove outputs from every notebook before committing"
 
 $(STAMP): environment.txt pyproject.toml
 	@test -d $(VENV) || $(PYTHON) -m venv $(VENV)
@@ -39,28 +47,70 @@ $(STAMP): environment.txt pyproject.toml
 
 venv: $(STAMP)
 
+$(VENDOR_STAMP): $(VENDOR)/package.json $(VENDOR)/package-lock.json
+	@if ! command -v npm >/dev/null && [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+		echo "installing Debian's npm to install the book's JavaScript"; \
+		apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq npm >/dev/null; \
+	fi
+	@command -v npm >/dev/null || { echo "make book needs Node.js and npm to install MathJax, require.js and the widgets manager from npm (install npm, e.g. apt-get install npm)"; exit 1; }
+	cd $(VENDOR) && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error
+	rm -rf $(VENDOR)/_static
+	mkdir -p $(VENDOR)/_static/mathjax $(VENDOR)/_static/mathjax/output $(VENDOR)/_static/requirejs $(VENDOR)/_static/html-manager
+	cd $(VENDOR)/node_modules/mathjax && cp -R LICENSE package.json es5/tex-mml-chtml.js es5/input es5/a11y es5/ui es5/sre es5/adaptors ../../_static/mathjax/
+	cp -R $(VENDOR)/node_modules/mathjax/es5/output/chtml $(VENDOR)/_static/mathjax/output/
+	cp $(VENDOR)/node_modules/requirejs/require.js $(VENDOR)/node_modules/requirejs/package.json $(VENDOR)/_static/requirejs/
+	cd $(VENDOR)/node_modules/@jupyter-widgets/html-manager && cp package.json dist/embed-amd.js dist/*.woff dist/*.woff2 \
+		dist/*.ttf dist/*.eot dist/*.svg ../../../_static/html-manager/
+	@touch $@
+
+vendor: $(VENDOR_STAMP)
+
 lint: $(STAMP)
 	$(BIN)/ruff check $(wildcard $(LINTED))
 
 unit: $(STAMP)
-	$(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2
+	$(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 -m "not book and not browser"
 
 notebooks: $(STAMP)
 	$(BIN)/python -m pytest -q -p no:cacheprovider --nbval-lax --nbval-sanitize-with tests/nbval_sanitize.cfg \
 		--nbval-cell-timeout=300 -n 2 --dist loadfile $(wildcard $(NOTEBOOKS))
 
-build-book: $(STAMP)
+# Warnings are errors (-W, -n: every reference must resolve); then the built files are
+# checked: every local link and anchor resolves, nothing loads from another host.
+build-book: $(STAMP) $(VENDOR_STAMP)
 	rm -rf book/_build
 	$(BIN)/jupyter-book build . $(JB_FLAGS)
 	@test -f book/_build/html/index.html
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py
 	@echo "The book is in book/_build/html/index.html"
 
 book: build-book
 
-test: lint unit notebooks build-book
+# Debian's chromium for the browser test: installed when missing where that is possible
+# (root and apt-get); elsewhere the browser test skips and says why.
+chromium:
+	@if [ -z "$(CHROMIUM)" ]; then \
+		if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+			echo "installing Debian's chromium for the browser test"; \
+			(apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null) \
+				|| echo "could not install chromium: the browser test will be skipped"; \
+		else \
+			echo "chromium is missing and cannot be installed here (needs root and apt-get): the browser test will be skipped"; \
+		fi; \
+	fi
 
+# Headless Chromium: every page of the built book from disk with the network off, then
+# each chapter with a widget run in JupyterLab (make lab's server, on 127.0.0.1) with its
+# widgets moved. After build-book; screenshots go to book/_build/screenshots.
+browser: $(STAMP) chromium
+	@test -f book/_build/html/index.html || { echo "no built book: run make book first"; exit 1; }
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --dist load --durations=5 tests/test_browser.py tests/test_lab.py
+
+test: lint unit notebooks build-book browser
+
+# JupyterLab (root must say so) at the book's start, with ipywidgets' extension for live widgets
 lab: $(STAMP)
-	$(BIN)/jupyter lab chapters/00_introduction.ipynb
+	$(BIN)/jupyter lab $(if $(filter 0,$(shell id -u)),--allow-root) chapters/00_introduction.ipynb
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
@@ -69,4 +119,4 @@ strip: $(STAMP)
 	$(BIN)/python tests/notebook_tools.py strip $(wildcard $(NOTEBOOKS))
 
 clean:
-	rm -rf book/_build .pytest_cache .hypothesis
+	rm -rf book/_build .pytest_cache .hypothesis $(VENDOR)/_static $(VENDOR)/node_modules
