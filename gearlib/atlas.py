@@ -135,7 +135,7 @@ def geared_chains(n_links: int, dof: int = 1, *, fractionated=False, level: str 
 
     Parameters
     ----------
-    n_links : int, 2 to :data:`MAX_LINKS`.
+    n_links : int, 2 to ``MAX_LINKS``.
     dof : int, at least 1: the freedoms once one link is held.
     fractionated : False (default), True or ``"only"``
         Leave out fractionated chains (the atlases of the literature), include them, or
@@ -349,7 +349,7 @@ class CountRow:
 
 
 def count_table(max_links: int = 7) -> tuple[CountRow, ...]:
-    """The enumeration's counts of non-fractionated chains beside :data:`PUBLISHED_COUNTS`,
+    """The enumeration's counts of non-fractionated chains beside ``PUBLISHED_COUNTS``,
     for chains of at most *max_links* links (8 links take about a minute).
 
     >>> [(r.links, r.enumerated, r.published) for r in gl.atlas.count_table(5) if r.dof == 1]

@@ -1,13 +1,9 @@
 """Drawings and a widget for differential synthesis (chapter 6).
 
-=============================  =================================================
-widget                         static twin
-=============================  =================================================
-:func:`dgm_explorer`           :func:`plot_identification` (every assignment of a
-                               chain at once) beside :func:`plot_dgm`
-=============================  =================================================
+Widget: :func:`gearlib.dgm_explorer`. Static twin: :func:`gearlib.plot_identification` (every
+assignment of a chain at once) beside :func:`gearlib.plot_dgm`.
 
-:func:`plot_dgm` draws a chain with its ground (grey square), terminals (black squares)
+:func:`gearlib.plot_dgm` draws a chain with its ground (grey square), terminals (black squares)
 and redundant links (orange) and writes the constraint under it; the widget redraws it
 for the chain, ground and terminals a reader picks.
 """
@@ -63,7 +59,7 @@ def plot_dgm(constraint: TerminalConstraint, ax=None, *, pos=None, title=None, e
 def plot_identification(ident: Identification, ax=None, *, title=None):
     """Every (ground, terminals) assignment of a chain in one chart, one row each, as CYL's
     Table 1: G ground, T terminal, R redundant link, · other link; the right column gives
-    the result. The static twin of :func:`dgm_explorer`.
+    the result. The static twin of :func:`gearlib.dgm_explorer`.
 
     >>> ident = gl.synthesis.identify(gl.catalog.load("cyl_gkc_5_7_2"))
     >>> ax = gl.plot_identification(ident)
@@ -188,5 +184,5 @@ class DGMExplorer:
 
 def dgm_explorer(chains, n_terminals: int = 3) -> DGMExplorer:
     """A widget: pick a chain, a ground and terminals and see the constraint equation and
-    the redundant links. Static twin: :func:`plot_identification` with :func:`plot_dgm`."""
+    the redundant links. Static twin: :func:`gearlib.plot_identification` with :func:`gearlib.plot_dgm`."""
     return DGMExplorer(chains, n_terminals)
