@@ -30,11 +30,28 @@ __all__ = [
     "ConstraintError",
     "InputError",
     "FileFormatError",
+    "GeometryError",
 ]
 
 
 class GearlibError(ValueError):
-    """Base class of every error gearlib raises on purpose."""
+    """Base class of every error gearlib raises on purpose.
+
+    The message is kept on one line: a control character that came from the user's data
+    (a link id ``"\\n"``, a tab in a name) is shown escaped, so it cannot break a log or
+    a notebook's error line.
+    """
+
+    def __init__(self, *args):
+        if len(args) == 1 and isinstance(args[0], str):
+            args = (_one_line(args[0]),)
+        super().__init__(*args)
+
+
+def _one_line(text: str) -> str:
+    if text.isprintable():
+        return text
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
 
 
 class MechanismError(GearlibError):
@@ -87,3 +104,8 @@ class InputError(ConstraintError):
 
 class FileFormatError(MechanismError):
     """A mechanism file cannot be read: missing, empty, not YAML/JSON, or not a mapping."""
+
+
+class GeometryError(MechanismError):
+    """Pitch radii or axis directions cannot be realised: centre distances that do not close a
+    loop, radii that disagree with the tooth numbers, or a bevel gear that cannot lie on one cone."""

@@ -171,3 +171,14 @@ def test_files_that_are_not_mechanisms(tmp_path):
         assert name in str(info.value)
     with pytest.raises(gl.FileFormatError, match="no such file"):
         gl.load(tmp_path / "missing.yaml")
+
+
+@pytest.mark.parametrize("bad", ["\n", "a\tb", "x\r\ny"])
+def test_control_characters_in_ids_stay_on_one_line(planetary_data, bad):
+    # found by the fuzz test in CI: the raw id used to break the message over two lines
+    planetary_data["turning_pairs"][0][0] = bad
+    with pytest.raises(gl.DataFormatError) as info:
+        gl.Mechanism.from_dict(planetary_data)
+    text = str(info.value)
+    assert "\n" not in text and "\t" not in text and "\r" not in text
+    assert text.startswith("turning pair (") and repr(bad)[1:-1] in text
