@@ -28,6 +28,7 @@ from .errors import (
     DuplicateEdgeError,
     FileFormatError,
     GearlibError,
+    GeometryError,
     InputError,
     MechanismError,
     OverconstrainedError,
@@ -78,6 +79,8 @@ from .frequencies import (
     with_bearings,
 )
 # --- chapter 5: Davies' efficiency (gearlib/davies/) ------------------------------
+from . import davies
+from .davies import efficiency, torque_balance_efficiency
 # --- chapter 6: differential synthesis (gearlib/atlas.py, gearlib/synthesis.py) ---
 from . import atlas, synthesis
 from .synthesis import identify, terminal_constraint
@@ -110,10 +113,11 @@ __all__ = [
     "frequency_table", "FrequencyTable", "FrequencyRow", "bearing_frequencies", "BearingFrequencies",
     "plot_spectrum", "load_bearings", "with_bearings", "wheel_speeds", "cornering_explorer", "plot_cornering",
     # chapter 5: Davies' efficiency
+    "davies", "efficiency", "torque_balance_efficiency",
     # chapter 6: differential synthesis
     "atlas", "synthesis", "terminal_constraint", "identify", "plot_dgm", "plot_identification", "dgm_explorer",
     # errors
     "GearlibError", "MechanismError", "DataFormatError", "UnknownLinkError", "DuplicateEdgeError",
     "SelfMeshError", "ToothNumberError", "CarrierError", "AxisError", "DisconnectedError",
-    "OverconstrainedError", "ConstraintError", "InputError", "FileFormatError",
+    "OverconstrainedError", "ConstraintError", "InputError", "FileFormatError", "GeometryError",
 ]

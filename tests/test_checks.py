@@ -48,6 +48,12 @@ ANSWERS = {
     "adjacency_planet_tooth_frequency": (15, [10, 450, 5, 20, -15]),
     "adjacency_outer_ring_frequency": (54, [36, 81, 67.5, 135, "-54"]),
     # ---------------------------------------------------------------- 05 Davies efficiency
+    "davies_pair_zeta": (0.06 / 2.94, [0.06 / 2.97, 0.03, -0.06 / 2.94, 1.0]),
+    "davies_epicyclic_efficiency": (5 * 0.98**2 / (14 - 9 * 0.98**2), [0.88912, 1.1247076, 0.9604, 0.946207]),
+    "davies_recirculation": (Fraction(13, 5), [1, Fraction(14, 5), Fraction(-13, 5), Fraction(5, 13)]),
+    "davies_humpage_efficiency": (0.7768967, [0.597708, 0.970299, 0.632647]),
+    "davies_humpage_driver": (5, [2, 1, 6]),
+    "davies_pair_bearings": (0.99**2 * 0.97, [0.97, 0.99 * 0.97, 0.960498]),
     # ---------------------------------------------------------------- 06 differential synthesis
     "synth_ground_links": ([1, 3, 4, 6], [[1, 3, 4], [1, 3, 4, 6, 7], "4", [2, 5]]),
     "synth_redundant_links": ({1, 2, 6}, [[1, 2], [5], (1, 2, 5, 6)]),

@@ -1,0 +1,144 @@
+"""A widget: tooth numbers and ordinary efficiencies -> overall efficiency and power flows.
+
+A thin wrapper over :func:`gearlib.davies.efficiency` and
+:func:`gearlib.davies.plot_power_flow` in the style of :mod:`gearlib.widgets`: a private
+matplotlib figure rendered into an ``ipywidgets.Image``; :meth:`EfficiencyExplorer.update`
+computes and redraws without a browser. Its static twin is
+:func:`gearlib.davies.plot_efficiency_sweep`.
+"""
+
+from __future__ import annotations
+
+import io
+
+import sympy
+
+from ..mechanism import Mechanism
+from .overall import efficiency
+
+__all__ = ["EfficiencyExplorer", "efficiency_explorer", "with_teeth"]
+
+
+def _render(draw, figsize=(6.0, 3.2), dpi=80) -> bytes:
+    """``draw(ax)`` on a private figure with a fixed layout (faster than a constrained one), as PNG."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize, dpi=dpi)
+    FigureCanvasAgg(fig)
+    fig.subplots_adjust(left=0.1, right=0.98, top=0.88, bottom=0.12)
+    draw(fig.add_subplot())
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png")
+    return buf.getvalue()
+
+
+def with_teeth(mech: Mechanism, pair, gear, teeth: int) -> Mechanism:
+    """*mech* with gear *gear* of *pair* given *teeth* teeth; its pitch radius follows at the
+    pair's module (radius per tooth), so radii stay proportional to tooth numbers."""
+    gp, _ = mech.gear_pair(*pair)
+    gear = mech.resolve(gear)
+    k = gp.gears.index(gear)
+    teeth_new = list(gp.teeth)
+    teeth_new[k] = int(teeth)
+    changes = {"teeth": tuple(teeth_new)}
+    if gp.radii is not None:
+        module = gp.radii[0] / gp.teeth[0]
+        changes["radii"] = tuple(module * t for t in teeth_new)
+    if gp.kind == "bevel" and gp.ratio is not None:
+        changes["ratio"] = sympy.sign(gp.ratio) * sympy.Rational(teeth_new[0], teeth_new[1])
+    return mech.with_gear_pair(gp.gears, **changes)
+
+
+class EfficiencyExplorer:
+    """Sliders for tooth numbers and ordinary efficiencies; shows the power flows
+    (:func:`gearlib.davies.plot_power_flow`) and the overall efficiency."""
+
+    def __init__(self, mech: Mechanism, ground, input, output, *, pairs=None, eta=0.98, max_teeth: int = 120):
+        self.mechanism = mech
+        self.ground, self.input, self.output = ground, input, output
+        chosen = mech.gear_pairs if pairs is None else [mech.gear_pair(*p)[0] for p in pairs]
+        self.pairs = [gp for gp in chosen if gp.teeth is not None]
+        self.eta = {gp.gears: float(eta if not isinstance(eta, dict) else eta.get(gp.gears, 0.98))
+                    for gp in mech.gear_pairs}
+        self.max_teeth = max_teeth
+        self.image = b""
+        self.text = ""
+        self.result = None
+        self._widget = None
+
+    def keys(self) -> list[str]:
+        """Slider names: ``N_<gear>_in_<a>_<b>`` for teeth and ``eta_<a>_<b>`` for each mesh."""
+        teeth = [f"N_{g}_in_{gp.gears[0]}_{gp.gears[1]}" for gp in self.pairs for g in gp.gears]
+        return teeth + [f"eta_{a}_{b}" for a, b in self.eta]
+
+    def current(self) -> dict:
+        out = {f"N_{g}_in_{gp.gears[0]}_{gp.gears[1]}": t for gp in self.pairs for g, t in zip(gp.gears, gp.teeth)}
+        out.update({f"eta_{a}_{b}": v for (a, b), v in self.eta.items()})
+        return out
+
+    def mechanism_for(self, **values) -> Mechanism:
+        values = self.current() | values
+        mech = self.mechanism
+        for gp in self.pairs:
+            for g, t in zip(gp.gears, gp.teeth):
+                new = int(values[f"N_{g}_in_{gp.gears[0]}_{gp.gears[1]}"])
+                if new != t:
+                    mech = with_teeth(mech, gp.gears, g, new)
+        return mech
+
+    def update(self, **values) -> bytes:
+        """Recompute for these tooth numbers and ordinary efficiencies and redraw; returns the PNG."""
+        from .drawing import plot_power_flow
+
+        merged = self.current() | values
+        mech = self.mechanism_for(**values)
+        eta = {pair: float(merged[f"eta_{pair[0]}_{pair[1]}"]) for pair in self.eta}
+        try:
+            self.result = efficiency(mech, self.ground, self.input, self.output, eta=eta)
+            self.text = f"overall efficiency η = {float(self.result.value):.5f}"
+            self.image = _render(lambda ax: plot_power_flow(self.result, ax=ax))
+        except ValueError as err:  # a GearlibError: say it, keep the last picture
+            self.text = f"cannot compute: {err}"
+        if self._widget is not None:
+            self._image_widget.value = self.image
+            self._label.value = self.text
+        return self.image
+
+    @property
+    def widget(self):
+        """The ipywidgets view (made on first use)."""
+        if self._widget is None:
+            import ipywidgets as w
+
+            self.update()
+            self._image_widget = w.Image(value=self.image, format="png")
+            self._label = w.Label(value=self.text)
+            sliders = []
+            for key, value in self.current().items():
+                if key.startswith("N_"):
+                    s = w.IntSlider(value=value, min=5, max=self.max_teeth, description=key.split("_in_")[0],
+                                    continuous_update=False)
+                else:
+                    s = w.FloatSlider(value=value, min=0.9, max=1.0, step=0.001, description=key,
+                                      continuous_update=False, readout_format=".3f")
+                s.observe(lambda change: self.update(**self._slider_values()), "value")
+                sliders.append((key, s))
+            self._sliders = dict(sliders)
+            boxes = [w.HBox([s for _, s in sliders[i:i + 2]]) for i in range(0, len(sliders), 2)]
+            self._widget = w.VBox(boxes + [self._label, self._image_widget])
+        return self._widget
+
+    def _slider_values(self) -> dict:
+        return {k: s.value for k, s in self._sliders.items()}
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+
+def efficiency_explorer(mech: Mechanism, ground, input, output, *, pairs=None, eta=0.98,
+                        max_teeth: int = 120) -> EfficiencyExplorer:
+    """A widget: sliders for the tooth numbers of *pairs* (default all) and the ordinary
+    efficiency of every mesh; shows the overall efficiency and the power flows. Static twin:
+    :func:`gearlib.davies.plot_efficiency_sweep`."""
+    return EfficiencyExplorer(mech, ground, input, output, pairs=pairs, eta=eta, max_teeth=max_teeth)
