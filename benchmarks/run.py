@@ -119,16 +119,181 @@ def import_time():
     return [Row("import gearlib", ours, base, "import numpy alone", "under 1 s", ours < 1.0)]
 
 
+# ----------------------------------------------------------------------------- propagation
+@case
+def propagation_scaling():
+    from gearlib.scaling import scaling
+
+    prop = scaling("propagation", (1_000, 2_000, 5_000, 10_000))
+    dense = scaling("dense null space", (250, 500, 1_000, 2_000), repeat=1)
+    rows = []
+    for n in (1_000, 10_000):
+        t = prop.seconds[prop.sizes.index(n)]
+        if n in dense.sizes:
+            base, label = dense.seconds[dense.sizes.index(n)], "dense null space (numpy SVD)"
+        else:
+            base = dense.extrapolate(n)
+            label = f"dense null space, extrapolated from 2,000 pairs at slope {dense.exponent():.1f}"
+        rows.append(Row(f"propagation, serial train of {n} pairs", t, base, label,
+                        "under 1 s" if n == 10_000 else "-", t < 1.0))
+    flat = prop.per_pair[-1] / prop.per_pair[0]
+    rows.append(Row("propagation: time per pair, 10,000 vs 1,000", prop.per_pair[-1], prop.per_pair[0],
+                    f"time per pair at 1,000 (fitted slope {prop.exponent():.2f}; dense {dense.exponent():.2f})",
+                    "flat (within 1.5x)", flat < 1.5))
+    return rows
+
+
+# ----------------------------------------------------------------------------- symbolic
+def _fresh(fn, make, repeat=3):
+    """Best time of ``fn(make())`` with sympy's cache cleared before each run (a warm-up run
+    first, so that lazy imports inside sympy and gearlib are not counted)."""
+    from sympy.core.cache import clear_cache
+
+    result = fn(make())
+    times = []
+    for _ in range(repeat):
+        obj = make()
+        clear_cache()
+        t = time.perf_counter()
+        result = fn(obj)
+        times.append(time.perf_counter() - t)
+    return min(times), result
+
+
+def _naive_speeds(mech, ground, known, unknown_links):
+    """sympy.solve on every Willis equation at once (the route a first sympy session takes)."""
+    import sympy
+
+    w = {k: gl.omega(k) for k in mech.link_ids}
+    eqs = [e.lhs - e.rhs for e in gl.willis_equations(mech)] + [w[ground]]
+    eqs += [w[k] - v for k, v in known.items()]
+    sol = sympy.solve(eqs, [w[k] for k in unknown_links], dict=True)
+    return sol[0], w
+
+
+@case
+def symbolic():
+    import sympy
+
+    rows = []
+    # eight-link geared kinematic chain: the terminal constraint among links 1, 2, 3
+    load8 = lambda: gl.catalog.load("cyl_gkc_8")  # noqa: E731
+    ours, tc = _fresh(lambda m: gl.terminal_constraint(m, (1, 2, 3), ground=0), load8)
+
+    def naive_dgm(m):
+        sol, w = _naive_speeds(m, 0, {}, [k for k in m.link_ids if k not in (1, 2)])
+        return sympy.factor(sol[w[3]])
+
+    base, w3 = _fresh(naive_dgm, load8)
+    w = {k: gl.omega(k) for k in (1, 2, 3)}
+    agree = sympy.cancel(tc.equation.subs(w[3], w3)) == 0
+    rows.append(Row("symbolic: 8-link DGM terminal constraint", ours, base, "sympy.solve + factor, whole system",
+                    ">= 10x and under 2 s" + ("" if agree else " (RESULTS DIFFER)"),
+                    agree and base / ours >= 10 and ours < 2))
+
+    # the automatic transmission's third gear: ground 1, input 4, output 8, as a factored ratio
+    load_t = lambda: gl.catalog.load("liu_chen_transmission")  # noqa: E731
+    ours, r = _fresh(lambda m: gl.unit_ratio(m, output=8, input=4, ground=1, method="symbolic"), load_t)
+
+    def naive_t3(m):
+        sol, w = _naive_speeds(m, 1, {4: 1}, [k for k in m.link_ids if k != 1])
+        return sympy.factor(sol[w[8]])
+
+    base, r_naive = _fresh(naive_t3, load_t)
+    agree = sympy.cancel(r - r_naive) == 0
+    rows.append(Row("symbolic: transmission third gear (propagation)", ours, base,
+                    "sympy.solve + factor, whole system", ">= 10x and under 2 s" + ("" if agree else " (DIFFER)"),
+                    agree and base / ours >= 10 and ours < 2))
+
+    # Humpage's bevel reducer: the efficiency formula by Davies' method
+    from unittest import mock
+
+    from gearlib.davies import _solve
+
+    hump = lambda: gl.catalog.humpage()  # noqa: E731
+    eff = lambda m: gl.efficiency(m, ground=5, input=1, output=4, symbolic=True).formula  # noqa: E731
+    ours, f = _fresh(eff, hump)
+    plain_solve, plain_null = _solve.solve, _solve.nullspace
+
+    def naive_solve(matrix, rhs, exact, what="system"):
+        if not exact:
+            return plain_solve(matrix, rhs, exact, what)
+        a, b = sympy.Matrix(matrix), sympy.Matrix(rhs)
+        xs = sympy.symbols(f"x0:{a.cols}")
+        sol = sympy.solve(list(a * sympy.Matrix(xs) - b), xs, dict=True)
+        return [sol[0][x] for x in xs]
+
+    def naive_null(matrix, exact):
+        return sympy.Matrix(matrix).nullspace() if exact else plain_null(matrix, exact)
+
+    with mock.patch.object(_solve, "solve", naive_solve), mock.patch.object(_solve, "nullspace", naive_null):
+        base, f_naive = _fresh(eff, hump, repeat=2)
+    agree = sympy.cancel(f - f_naive) == 0
+    rows.append(Row("symbolic: Humpage efficiency formula (Davies)", ours, base,
+                    "every linear solve by sympy.solve / Matrix.nullspace",
+                    ">= 10x and under 2 s" + ("" if agree else " (DIFFER)"), agree and base / ours >= 10 and ours < 2))
+    return rows
+
+
 # ----------------------------------------------------------------------------- widgets
+def _widget_row(name, ex, updates):
+    """Best time of a compute-and-redraw callback, cycling through *updates*."""
+    ex.update(**updates[0])
+    cycle = iter(range(10**6))
+    t = best(lambda: ex.update(**updates[next(cycle) % len(updates)]), repeat=10)
+    return Row(f"widget: {name}", t, None, "-", "under 50 ms", t < 0.05)
+
+
 @case
 def widget_callbacks():
-    rows = []
-    ex = gl.widgets.speed_explorer(gl.catalog.simple_planetary(), ground=3, inputs={1: 1})
-    ex.update()
+    from gearlib.davies import efficiency_explorer
+
+    planetary = gl.catalog.simple_planetary()
+    ex = gl.widgets.speed_explorer(planetary, ground=3, inputs={1: 1})
     k = ex.keys()[0]
-    values = iter(range(10, 10**6))
-    ours = best(lambda: ex.update(**{k: 10 + next(values) % 60}), repeat=10)
-    rows.append(Row("widget: speed explorer update", ours, None, "-", "under 50 ms", ours < 0.05))
+    rows = [_widget_row("speed explorer (tooth slider)", ex, [{k: 20 + i} for i in range(40)])]
+    names = ["liu_chen_transmission", "car_differential", "simpson", "ravigneaux", "chen_wrist"]
+    rows.append(_widget_row("unit explorer (choose a mechanism)", gl.unit_explorer(),
+                            [{"name": n} for n in names]))
+    mech = gl.catalog.load("liu_chen_transmission")
+    modes = gl.transmission.LIU_CHEN_MODES
+    rows.append(_widget_row("transmission explorer (choose a gear)",
+                            gl.unit_widgets.transmission_explorer(mech, modes),
+                            [{"mode": m.name} for m in modes]))
+    rows.append(_widget_row("cornering explorer (speed slider)", gl.cornering_explorer(),
+                            [{"speed": 20.0 + i, "turn": "right"} for i in range(40)]))
+    chain = gl.catalog.load("cyl_gkc_8")
+    rows.append(_widget_row("DGM explorer (choose terminals)", gl.dgm_explorer([chain]),
+                            [{"ground": 0, "terminals": t} for t in [(1, 2, 3), (1, 2, 4), (2, 3, 5), (1, 3, 6)]]))
+    epi = gl.catalog.load("laus_epicyclic")
+    eff = efficiency_explorer(epi, 1, 5, 2, eta={(1, 3): 0.99, (2, 3): 0.99})
+    rows.append(_widget_row("efficiency explorer (efficiency slider)", eff,
+                            [{"eta_1_3": 0.95 + 0.001 * i} for i in range(40)]))
+    return rows
+
+
+# ----------------------------------------------------------------------------- notebooks
+@case
+def notebooks():
+    """Each chapter, exercise and solution notebook executed top to bottom in a fresh kernel."""
+    import glob
+    import pathlib
+
+    import nbformat
+    from nbclient import NotebookClient
+
+    root = pathlib.Path(__file__).resolve().parent.parent
+    rows = []
+    for path in sorted(glob.glob(str(root / "chapters" / "*.ipynb"))) + sorted(
+            glob.glob(str(root / "exercises" / "*.ipynb"))) + sorted(glob.glob(str(root / "book" / "solutions" / "*.ipynb"))):
+        nb = nbformat.read(path, as_version=4)
+        client = NotebookClient(nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(
+            pathlib.Path(path).parent)}})
+        t = time.perf_counter()
+        client.execute()
+        t = time.perf_counter() - t
+        rel = pathlib.Path(path).relative_to(root)
+        rows.append(Row(f"notebook {rel}", t, None, "-", "under 30 s", t < 30))
     return rows
 
 

@@ -14,11 +14,8 @@ random generators).
 Fraction(2, 7)
 """
 
-from . import catalog, check, plot, widgets
-from .display import number
-from .generate import random_mechanism, serial_train
-from .adjacency import adjacency_matrix, link_table, null_space, speed_ratio_matrix
-from .equations import WillisEquation, omega, ratio_symbols, willis_equations, willis_matrix
+import importlib
+
 from .errors import (
     AxisError,
     CarrierError,
@@ -36,57 +33,170 @@ from .errors import (
     ToothNumberError,
     UnknownLinkError,
 )
-from .graph import FundamentalCircuit, displacement_graph, fundamental_circuits, to_networkx
-from .io import load, loads, save
-from .kinematics import Constraints, Solution, ratio, speeds
-from .mechanism import Bearing, GearPair, Link, Mechanism, TurningPair
-from .mobility import Mobility, choose_inputs, dof
-from .plot import draw_graph, plot_speeds
-
-# --- chapter 2: kinematic units (gearlib/units.py) -------------------------------
-from . import propagation, unit_plot, unit_widgets, units
-from .fge import fundamental_geared_entities
-from .ku_types import ku_catalogue
-from .propagation import plan
-from .unit_plot import draw_fractionation, draw_ku_catalogue, draw_units
-from .unit_widgets import unit_explorer
-from .units import CommonLinkage, Fractionation, KinematicUnit, kinematic_units
-# --- chapter 3: unit-by-unit gains (gearlib/gains.py, gearlib/robots.py) ----------
-from . import gains, relation, robots, rules, transmission
-from .gains import local_gain
-from .relation import Propagation, propagate, unit_ratio
-from .robots import GearedRobot, geared_robot
-from .rules import derive_rule, match_rule
-from .transmission import shift_table
-# --- chapter 4: complex adjacency, frequencies (gearlib/adjacency.py, gearlib/frequencies.py)
-from .adjacency import (
-    constraint_rows,
-    direction,
-    reduced_basis,
-    same_subspace,
-    show_link_table,
-    show_matrix,
-)
-from .cornering import cornering_explorer, plot_cornering, wheel_speeds
-from .frequencies import (
-    BearingFrequencies,
-    FrequencyRow,
-    FrequencyTable,
-    bearing_frequencies,
-    frequency_table,
-    load_bearings,
-    plot_spectrum,
-    with_bearings,
-)
-# --- chapter 5: Davies' efficiency (gearlib/davies/) ------------------------------
-from . import davies
-from .davies import efficiency, torque_balance_efficiency
-# --- chapter 6: differential synthesis (gearlib/atlas.py, gearlib/synthesis.py) ---
-from . import atlas, synthesis
-from .synthesis import identify, terminal_constraint
-from .dgm_view import dgm_explorer, plot_dgm, plot_identification
 
 __version__ = "0.1.0"
+
+# Public names and the module each lives in. Modules load on first use (PEP 562), so
+# ``import gearlib`` stays quick and a reader who never draws never imports matplotlib.
+# A name whose module equals the name is a submodule (``gl.catalog``, ``gl.plot``).
+_WHERE = {
+    # catalog
+    "catalog": "catalog",
+    # check
+    "check": "check",
+    # plot
+    "plot": "plot",
+    "draw_graph": "plot",
+    "plot_speeds": "plot",
+    # widgets
+    "widgets": "widgets",
+    # display
+    "number": "display",
+    # generate
+    "random_mechanism": "generate",
+    "serial_train": "generate",
+    # adjacency
+    "adjacency_matrix": "adjacency",
+    "link_table": "adjacency",
+    "null_space": "adjacency",
+    "speed_ratio_matrix": "adjacency",
+    "constraint_rows": "adjacency",
+    "direction": "adjacency",
+    "reduced_basis": "adjacency",
+    "same_subspace": "adjacency",
+    "show_link_table": "adjacency",
+    "show_matrix": "adjacency",
+    # equations
+    "WillisEquation": "equations",
+    "omega": "equations",
+    "ratio_symbols": "equations",
+    "willis_equations": "equations",
+    "willis_matrix": "equations",
+    # graph
+    "FundamentalCircuit": "graph",
+    "displacement_graph": "graph",
+    "fundamental_circuits": "graph",
+    "to_networkx": "graph",
+    # io
+    "load": "io",
+    "loads": "io",
+    "save": "io",
+    # kinematics
+    "Constraints": "kinematics",
+    "Solution": "kinematics",
+    "ratio": "kinematics",
+    "speeds": "kinematics",
+    # mechanism
+    "Bearing": "mechanism",
+    "GearPair": "mechanism",
+    "Link": "mechanism",
+    "Mechanism": "mechanism",
+    "TurningPair": "mechanism",
+    # mobility
+    "Mobility": "mobility",
+    "choose_inputs": "mobility",
+    "dof": "mobility",
+    # propagation
+    "propagation": "propagation",
+    "plan": "propagation",
+    # unit_plot
+    "unit_plot": "unit_plot",
+    "draw_fractionation": "unit_plot",
+    "draw_ku_catalogue": "unit_plot",
+    "draw_units": "unit_plot",
+    # unit_widgets
+    "unit_widgets": "unit_widgets",
+    "unit_explorer": "unit_widgets",
+    # units
+    "units": "units",
+    "CommonLinkage": "units",
+    "Fractionation": "units",
+    "KinematicUnit": "units",
+    "kinematic_units": "units",
+    # fge
+    "fundamental_geared_entities": "fge",
+    # ku_types
+    "ku_catalogue": "ku_types",
+    # gains
+    "gains": "gains",
+    "local_gain": "gains",
+    # relation
+    "relation": "relation",
+    "Propagation": "relation",
+    "propagate": "relation",
+    "unit_ratio": "relation",
+    # robots
+    "robots": "robots",
+    "GearedRobot": "robots",
+    "geared_robot": "robots",
+    # rules
+    "rules": "rules",
+    "derive_rule": "rules",
+    "match_rule": "rules",
+    # transmission
+    "transmission": "transmission",
+    "shift_table": "transmission",
+    # cornering
+    "cornering_explorer": "cornering",
+    "plot_cornering": "cornering",
+    "wheel_speeds": "cornering",
+    # frequencies
+    "BearingFrequencies": "frequencies",
+    "FrequencyRow": "frequencies",
+    "FrequencyTable": "frequencies",
+    "bearing_frequencies": "frequencies",
+    "frequency_table": "frequencies",
+    "load_bearings": "frequencies",
+    "plot_spectrum": "frequencies",
+    "with_bearings": "frequencies",
+    # davies
+    "davies": "davies",
+    "efficiency": "davies",
+    "torque_balance_efficiency": "davies",
+    # atlas
+    "atlas": "atlas",
+    # synthesis
+    "synthesis": "synthesis",
+    "identify": "synthesis",
+    "terminal_constraint": "synthesis",
+    # dgm_view
+    "dgm_explorer": "dgm_view",
+    "plot_dgm": "dgm_view",
+    "plot_identification": "dgm_view",
+    # every other public module, reachable as gl.<module>
+    "adjacency": "adjacency",
+    "bearings": "bearings",
+    "cornering": "cornering",
+    "dgm_view": "dgm_view",
+    "display": "display",
+    "equations": "equations",
+    "fge": "fge",
+    "frequencies": "frequencies",
+    "generate": "generate",
+    "graph": "graph",
+    "io": "io",
+    "kinematics": "kinematics",
+    "ku_types": "ku_types",
+    "mechanism": "mechanism",
+    "mobility": "mobility",
+    "scaling": "scaling",
+}
+
+
+def __getattr__(name: str):
+    try:
+        where = _WHERE[name]
+    except KeyError:
+        raise AttributeError(f"module 'gearlib' has no attribute {name!r}") from None
+    module = importlib.import_module(f".{where}", __name__)
+    value = module if where == name else getattr(module, name)
+    globals()[name] = value  # next time, no lookup
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_WHERE))
+
 
 __all__ = [
     # data

@@ -17,13 +17,29 @@ from .propagation import Plan
 class Evaluator:
     """Evaluates a plan's quantities lazily, as linear combinations of inputs and tears."""
 
-    def __init__(self, p: Plan, method: str):
-        self.plan, self.method = p, method
+    def __init__(self, p: Plan, method: str, field=None):
+        """*field*: for ``method="symbolic"``, a sympy fraction field holding the gear ratios;
+        the arithmetic then runs on its elements (reduced fractions of polynomials), which is
+        far faster than on sympy expressions."""
+        self.plan, self.method, self.field = p, method, field
         self.gains: dict = {}
         self.memo: dict = {}
+        self._converted: dict = {}
         sym = method != "exact"
-        self.zero = sympy.Integer(0) if sym else 0
-        self.one = sympy.Integer(1) if sym else 1
+        if field is not None:
+            self.zero, self.one = field.zero, field.one
+        else:
+            self.zero = sympy.Integer(0) if sym else 0
+            self.one = sympy.Integer(1) if sym else 1
+
+    def _speed(self, unit, link):
+        c = _tree(unit).speed(link, self.method)
+        if self.field is None:
+            return c
+        key = (unit.index, link)
+        if key not in self._converted:
+            self._converted[key] = self.field.from_sympy(c)
+        return self._converted[key]
 
     def gain(self, unit, z, w, x, y):
         if z == w:
@@ -36,12 +52,11 @@ class Evaluator:
             s = _gain_symbol(unit, z, w, x, y)
             self.gains.setdefault(s, LocalGain(unit, (z, w), (x, y), s))
             return s
-        c = _tree(unit).speed
-        m = self.method
-        den = c(x, m) - c(y, m)
+        c = self._speed
+        den = c(unit, x) - c(unit, y)
         if den == 0:
             raise ConstraintError(f"in {unit.name} links {x} and {y} always turn together; choose other inputs")
-        return (c(z, m) - c(w, m)) / den
+        return (c(unit, z) - c(unit, w)) / den
 
     # node keys: ("pot", link) and ("sig", step index)
     def _deps(self, node):
@@ -173,7 +188,7 @@ def _is_zero(v) -> bool:
     return v == 0
 
 
-def solve_tears(rows, n_tears, n_inputs, symbolic, mech, plan_: Plan, pivots=None):
+def solve_tears(rows, n_tears, n_inputs, symbolic, mech, plan_: Plan, pivots=None, field=None):
     """Solve the consistency equations for the tears: ``{j: {("in", k): coef}}``."""
     zero = sympy.Integer(0) if symbolic else 0
     A = [[r.get(("t", j), zero) for j in range(n_tears)] for r in rows]
@@ -184,6 +199,18 @@ def solve_tears(rows, n_tears, n_inputs, symbolic, mech, plan_: Plan, pivots=Non
         rows_used = pivots
         if not n_tears:
             return {}, pivots
+        if field is not None:  # Gauss-Jordan on the exact solve's pivot rows, in the field
+            m = [[field.convert(v) for v in A[i] + B[i]] for i in rows_used]
+            for j in range(n_tears):
+                r = next(i for i in range(j, n_tears) if m[i][j])
+                m[j], m[r] = m[r], m[j]
+                inv = 1 / m[j][j]
+                m[j] = [v * inv for v in m[j]]
+                for i in range(n_tears):
+                    if i != j and m[i][j]:
+                        f = m[i][j]
+                        m[i] = [a - f * b for a, b in zip(m[i], m[j])]
+            return {j: {("in", k): -m[j][n_tears + k] for k in range(n_inputs)} for j in range(n_tears)}, pivots
         Am = sympy.Matrix([A[i] for i in rows_used])
         Bm = sympy.Matrix([B[i] for i in rows_used])
         T = Am.LUsolve(-Bm)
@@ -222,3 +249,90 @@ def count_message(mech, p: Plan, why) -> str:
                 "freedoms. Choose other input links")
     return (f"{mech.name!r} has {n} degree{'s' if n != 1 else ''} of freedom with link {p.ground} grounded, so it "
             f"needs {n} input{'s' if n != 1 else ''}; got {len(p.inputs)} ({names})")
+
+
+class _Ratio:
+    """``num / den`` over a sympy polynomial ring, kept unreduced (no gcd per operation).
+
+    Propagation multiplies and adds a handful of small local gains; reducing after every
+    operation (as a fraction field does) costs most of the time. Equal denominators are
+    added without growth, and :meth:`reduced` cancels once at the end.
+    """
+
+    __slots__ = ("num", "den")
+
+    def __init__(self, num, den):
+        self.num, self.den = num, den
+
+    def _lift(self, other):
+        if isinstance(other, _Ratio):
+            return other
+        ring = self.num.ring
+        return _Ratio(ring(other), ring.one)
+
+    def __add__(self, other):
+        o = self._lift(other)
+        if self.den == o.den:
+            return _Ratio(self.num + o.num, self.den)
+        return _Ratio(self.num * o.den + o.num * self.den, self.den * o.den)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return _Ratio(-self.num, self.den)
+
+    def __sub__(self, other):
+        return self + (-self._lift(other))
+
+    def __rsub__(self, other):
+        return self._lift(other) - self
+
+    def __mul__(self, other):
+        o = self._lift(other)
+        return _Ratio(self.num * o.num, self.den * o.den)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        o = self._lift(other)
+        if not o.num:
+            raise ZeroDivisionError("division by a zero ratio")
+        return _Ratio(self.num * o.den, self.den * o.num)
+
+    def __rtruediv__(self, other):
+        return self._lift(other) / self
+
+    def __bool__(self):
+        return bool(self.num)
+
+    def __eq__(self, other):
+        o = self._lift(other)
+        return self.num * o.den == o.num * self.den
+
+    __hash__ = None
+
+    def reduced(self):
+        """``(numerator, denominator)`` without common factors, the denominator's leading
+        coefficient positive."""
+        num, den = self.num.cancel(self.den)
+        return num, den
+
+
+class RatioRing:
+    """Factory of :class:`_Ratio` values over the polynomial ring of a mechanism's gear ratios."""
+
+    def __init__(self, ring):
+        self.ring = ring
+        self.zero = _Ratio(ring.zero, ring.one)
+        self.one = _Ratio(ring.one, ring.one)
+
+    def from_sympy(self, expr):
+        num, den = sympy.fraction(sympy.together(expr))
+        return _Ratio(self.ring.from_expr(num), self.ring.from_expr(den))
+
+    def convert(self, value):
+        if isinstance(value, _Ratio):
+            return value
+        if isinstance(value, sympy.Basic):
+            return self.from_sympy(value)
+        return _Ratio(self.ring(value), self.ring.one)

@@ -88,35 +88,6 @@ def _plot_link_speeds(solution, ax, title=None):
     return ax
 
 
-class _Canvas:
-    """A private two-panel figure kept between updates: each update clears the axes, draws
-    and encodes a PNG (no pyplot, no global matplotlib state)."""
-
-    def __init__(self, figsize=(10.0, 3.6), dpi=72):
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
-
-        self.figure = Figure(figsize=figsize, dpi=dpi)
-        FigureCanvasAgg(self.figure)
-        self.axes = self.figure.subplots(1, 2, width_ratios=[1, 1.5])
-        self.figure.subplots_adjust(left=0.11, right=0.66, bottom=0.15, top=0.9, wspace=0.25)
-
-    def render(self, draws) -> bytes:
-        import io
-
-        for draw, ax in zip(draws, self.axes):
-            # remove what the last update drew but keep the axes and their ticks: clearing
-            # the axes would rebuild every tick, which costs more than the drawing itself
-            for artist in [*ax.lines, *ax.collections, *ax.texts, *ax.patches, *ax.images]:
-                artist.remove()
-            if ax.get_legend() is not None:
-                ax.get_legend().remove()
-            draw(ax)
-        buf = io.BytesIO()
-        self.figure.savefig(buf, format="png")
-        return buf.getvalue()
-
-
 class CorneringExplorer:
     """Car speed and turn radius -> wheel speeds -> every link's speed (Penaud's
     ``Omega = Omega_0 Lambda``) -> the frequency spectrum.
@@ -175,9 +146,12 @@ class CorneringExplorer:
         where = "straight ahead" if turn == "straight" else f"{turn} turn, radius {turn_radius:g} m"
         self.text = f"{speed:g} km/h, {where}: left wheel {wl:.4g} rad/s, right wheel {wr:.4g} rad/s"
         if self._canvas is None:
-            self._canvas = _Canvas()
-        self.image = self._canvas.render([lambda ax: _plot_link_speeds(sol, ax, "speeds, frame fixed"),
-                                          lambda ax: plot_spectrum(table, ax=ax, title="contact frequencies")])
+            from .widgets import Canvas
+
+            self._canvas = Canvas((10.0, 3.6), dpi=72, margins=(0.11, 0.66, 0.15, 0.9), panels=2,
+                                  width_ratios=[1, 1.5], wspace=0.25, keep_axes=True)
+        self.image = self._canvas.png(lambda ax: _plot_link_speeds(sol, ax, "speeds, frame fixed"),
+                                      lambda ax: plot_spectrum(table, ax=ax, title="contact frequencies"))
         if self._widget is not None:
             self._image_widget.value = self.image
             self._label.value = self.text

@@ -390,7 +390,11 @@ def _domain_solve(mech, cons, ratio_of, m):
     cons_d = Constraints(cons.mechanism, cons.ground, cons.held, cons.joined,
                          tuple((u, v, val) for (u, v, _), val in zip(cons.inputs, elems[len(ratios):])))
     x, dof = _solve_echelon(mech, cons_d, field, _gear_rows(mech, lambda gp: conv[pos[id(gp)]]), m)
-    return [sympy.cancel(field.to_sympy(v)) for v in x], dof
+    if field.name.startswith("EX"):  # arbitrary expressions: bring each speed to one fraction
+        return [sympy.cancel(field.to_sympy(v)) for v in x], dof
+    # rational-function and algebraic fields keep their elements as reduced fractions already;
+    # sympy.cancel here would cost about 20 ms a link and change nothing
+    return [field.to_sympy(v) for v in x], dof
 
 
 def _symbolic(mech, cons):

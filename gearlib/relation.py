@@ -22,7 +22,7 @@ from functools import cached_property
 
 import sympy
 
-from ._evaluate import Evaluator, solve_tears
+from ._evaluate import Evaluator, RatioRing, solve_tears
 from ._parse import to_fraction
 from .errors import InputError
 from .mechanism import Mechanism
@@ -58,21 +58,26 @@ class Propagation:
 
     def _run(self, method):
         p = self.plan
-        ev = Evaluator(p, method)
+        field = _ratio_field(p.mechanism) if method == "symbolic" else None
+        ev = Evaluator(p, method, field)
         out = ev.theta(*p.output)
         rows = ev.equations() if (p.equations or p.n_tears) else []
         sym = method != "exact"
         if sym:
-            sol, _ = solve_tears(rows, p.n_tears, len(p.inputs), True, p.mechanism, p, self._exact[2])
+            sol, _ = solve_tears(rows, p.n_tears, len(p.inputs), True, p.mechanism, p, self._exact[2], field)
         else:
             sol, piv = solve_tears(rows, p.n_tears, len(p.inputs), False, p.mechanism, p)
-        zero = sympy.Integer(0) if sym else 0
+        zero = field.zero if field is not None else sympy.Integer(0) if sym else 0
         coef = {k: out.get(("in", k), zero) for k in range(len(p.inputs))}
         for j, expr in sol.items():
             t = out.get(("t", j), zero)
             for k in range(len(p.inputs)):
                 coef[k] = coef[k] + t * expr[("in", k)]
         result = {p.inputs[k]: coef[k] for k in range(len(p.inputs))}
+        if field is not None:
+            result = {k: _factored(field, v) for k, v in result.items()}
+        elif method == "symbolic":
+            result = {k: sympy.factor(sympy.cancel(v)) for k, v in result.items()}
         if sym:
             return result, ev.gains, None
         return result, ev.gains, piv
@@ -80,7 +85,7 @@ class Propagation:
     @cached_property
     def _symbolic(self):
         res, _, _ = self._run("symbolic")
-        return {k: sympy.factor(sympy.cancel(v)) for k, v in res.items()}
+        return res
 
     @cached_property
     def _gains(self):
@@ -169,6 +174,39 @@ class Propagation:
         rhs = self.expression()
         lines.append(f"{theta(*self.output)} = {rhs}")
         return "\n".join(lines)
+
+
+def _ratio_field(mech: Mechanism):
+    """Unreduced fractions over the integer polynomial ring of the gear-ratio symbols ``e_a_b``
+    (or of the symbols in a ratio given as an expression); None when that ring cannot hold them."""
+    from sympy.polys.rings import ring
+
+    exprs = [gp.symbol if not gp.e.free_symbols else gp.e for gp in mech.gear_pairs]
+    symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=str)
+    if not symbols:
+        return None
+    R = ring(symbols, sympy.ZZ)[0]
+    field = RatioRing(R)
+    try:
+        for e in exprs:
+            field.from_sympy(e)
+    except (ValueError, TypeError, sympy.polys.polyerrors.PolynomialError):
+        return None  # irrational or transcendental ratios: use sympy expressions
+    return field
+
+
+def _factored(field, v):
+    """A ratio as sympy's ``factor`` prints it, factored in the polynomial ring."""
+    if not v:
+        return sympy.Integer(0)
+    num, den = v.reduced()
+    (cn, fn), (cd, fd) = num.factor_list(), den.factor_list()
+    out = sympy.Rational(int(cn), int(cd))
+    for f, k in fn:
+        out *= f.as_expr() ** k
+    for f, k in fd:
+        out /= f.as_expr() ** k
+    return out
 
 
 def _simplify_number(v):

@@ -14,38 +14,17 @@ widget                         static twin
 
 from __future__ import annotations
 
-import io
 
 from .mechanism import Mechanism
 
 __all__ = ["UnitExplorer", "unit_explorer", "TransmissionExplorer", "transmission_explorer"]
 
 
-class _GraphCanvas:
-    """One private figure for graph drawings (axes off): between frames the drawn artists are
-    removed instead of clearing the axes, which skips rebuilding ticks (about a third of the
-    time of a frame)."""
+def _graph_canvas(figsize):
+    """A canvas for graph drawings: no margins, and the axes kept between frames."""
+    from .widgets import Canvas
 
-    def __init__(self, figsize, dpi=72):
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
-
-        self.figure = Figure(figsize=figsize, dpi=dpi)
-        FigureCanvasAgg(self.figure)
-        self.figure.subplots_adjust(left=0.0, right=1.0, bottom=0.0, top=1.0)
-        self.ax = self.figure.add_subplot()
-
-    def png(self, draw) -> bytes:
-        ax = self.ax
-        for artist in [*ax.patches, *ax.lines, *ax.texts, *ax.collections]:
-            artist.remove()
-        if ax.get_legend() is not None:
-            ax.get_legend().remove()
-        ax.set_title("")
-        draw(ax)
-        buf = io.BytesIO()
-        self.figure.savefig(buf, format="png")
-        return buf.getvalue()
+    return Canvas(figsize, dpi=72, margins=(0.0, 1.0, 0.0, 1.0), keep_axes=True)
 
 
 def _geared_names() -> list[str]:
@@ -85,7 +64,7 @@ class UnitExplorer:
         links = "; ".join(str(c) for c in frac.linkages) or "no common linkage"
         self.text = f"{frac.mechanism.name}: {units}. {links}."
         if self._canvas is None:
-            self._canvas = _GraphCanvas(figsize=(4.6, 3.4))
+            self._canvas = _graph_canvas(figsize=(4.6, 3.4))
         if self.name not in self._pos:
             from .plot import graph_layout
 
@@ -174,7 +153,7 @@ class TransmissionExplorer:
         path = " then ".join(f"{s.unit.name}" for s in prop.steps)
         self.text = f"{m}: ratio {format_value(self.ratio, 8)} through {path}"
         if self._canvas is None:
-            self._canvas = _GraphCanvas(figsize=(5.4, 2.4))
+            self._canvas = _graph_canvas(figsize=(5.4, 2.4))
         self.image = self._canvas.png(lambda ax: draw_propagation(prop, ax=ax, title=""))
         if self._widget is not None:
             self._image.value = self.image

@@ -9,28 +9,12 @@ computes and redraws without a browser. Its static twin is
 
 from __future__ import annotations
 
-import io
-
 import sympy
 
 from ..mechanism import Mechanism
 from .overall import efficiency
 
 __all__ = ["EfficiencyExplorer", "efficiency_explorer", "with_teeth"]
-
-
-def _render(draw, figsize=(6.0, 3.2), dpi=80) -> bytes:
-    """``draw(ax)`` on a private figure with a fixed layout (faster than a constrained one), as PNG."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=figsize, dpi=dpi)
-    FigureCanvasAgg(fig)
-    fig.subplots_adjust(left=0.1, right=0.98, top=0.88, bottom=0.12)
-    draw(fig.add_subplot())
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png")
-    return buf.getvalue()
 
 
 def with_teeth(mech: Mechanism, pair, gear, teeth: int) -> Mechanism:
@@ -66,6 +50,7 @@ class EfficiencyExplorer:
         self.text = ""
         self.result = None
         self._widget = None
+        self._canvas = None
 
     def keys(self) -> list[str]:
         """Slider names: ``N_<gear>_in_<a>_<b>`` for teeth and ``eta_<a>_<b>`` for each mesh."""
@@ -97,7 +82,11 @@ class EfficiencyExplorer:
         try:
             self.result = efficiency(mech, self.ground, self.input, self.output, eta=eta)
             self.text = f"overall efficiency η = {float(self.result.value):.5f}"
-            self.image = _render(lambda ax: plot_power_flow(self.result, ax=ax))
+            if self._canvas is None:
+                from ..widgets import Canvas
+
+                self._canvas = Canvas(margins=(0.1, 0.98, 0.12, 0.88))
+            self.image = self._canvas.png(lambda ax: plot_power_flow(self.result, ax=ax))
         except ValueError as err:  # a GearlibError: say it, keep the last picture
             self.text = f"cannot compute: {err}"
         if self._widget is not None:

@@ -1,0 +1,56 @@
+"""The dense null-space baseline of chapter 3's timing comparison, and the curve helpers.
+Timings themselves are never asserted (they belong to `make bench`)."""
+
+from fractions import Fraction
+
+import matplotlib
+import pytest
+
+import gearlib as gl
+from gearlib.scaling import ScalingCurve, dense_nullspace_ratio
+
+matplotlib.use("Agg")
+
+
+@pytest.mark.parametrize("n", [1, 2, 5, 12])
+def test_dense_baseline_gives_the_serial_train_ratio(n):
+    assert dense_nullspace_ratio(gl.serial_train(n), output=n + 1, input=1, ground=0) == pytest.approx(
+        float(Fraction(-1, 2) ** n), rel=1e-9)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_dense_baseline_agrees_with_the_exact_solver_on_random_trains(seed):
+    m = gl.random_mechanism(8, dof=1, rng=seed)
+    exact = gl.ratio(m, output=m.link_ids[-1], input=1, ground=0)
+    assert dense_nullspace_ratio(m, output=m.link_ids[-1], input=1, ground=0) == pytest.approx(float(exact),
+                                                                                               rel=1e-8)
+
+
+def test_dense_baseline_refuses_bad_input():
+    m = gl.serial_train(3)
+    with pytest.raises(gl.InputError, match="output link 9"):
+        dense_nullspace_ratio(m, output=9, input=1, ground=0)
+    two_dof = gl.catalog.load("ravigneaux")
+    with pytest.raises(gl.InputError, match="one degree of freedom; this mechanism has 2"):
+        dense_nullspace_ratio(two_dof, output=2, input=1, ground=0)
+
+
+def test_curve_exponent_and_extrapolation_on_known_power_laws():
+    sizes = (100, 200, 400, 800)
+    cubic = ScalingCurve("dense null space", sizes, tuple(2e-9 * n**3 for n in sizes))
+    linear = ScalingCurve("propagation", sizes, tuple(3e-5 * n for n in sizes))
+    assert cubic.exponent() == pytest.approx(3.0)
+    assert linear.exponent() == pytest.approx(1.0)
+    assert cubic.extrapolate(1600) == pytest.approx(2e-9 * 1600**3)
+    assert linear.per_pair == pytest.approx((3e-5,) * 4)
+
+
+def test_scaling_checks_its_arguments_and_plots():
+    with pytest.raises(gl.InputError, match="unknown method 'qr'"):
+        gl.scaling.scaling("qr", (10,))
+    with pytest.raises(gl.InputError, match="positive"):
+        gl.scaling.scaling("propagation", (0,))
+    curve = gl.scaling.scaling("propagation", (5, 10), repeat=1)
+    assert curve.sizes == (5, 10) and all(t > 0 for t in curve.seconds)
+    ax = gl.scaling.plot_scaling(curve)
+    assert ax.get_xscale() == "log" and "propagation" in ax.get_legend().get_texts()[0].get_text()

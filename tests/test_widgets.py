@@ -1,0 +1,65 @@
+"""Every widget redraws without a browser: an update returns a PNG of its figure, reports the
+right numbers in its text, and two different inputs give two different pictures. The
+shared canvas keeps its figure private (pyplot never sees it)."""
+
+import matplotlib
+import pytest
+
+import gearlib as gl
+from gearlib.davies import efficiency_explorer
+from gearlib.widgets import Canvas
+
+matplotlib.use("Agg")
+PNG = b"\x89PNG"
+
+
+def test_speed_explorer():
+    ex = gl.widgets.speed_explorer(gl.catalog.simple_planetary(sun=24, ring=60), ground=3, inputs={1: 1})
+    first = ex.update()
+    k = ex.keys()[0]
+    second = ex.update(**{k: 30})
+    assert first[:4] == second[:4] == PNG and first != second
+
+
+def test_unit_explorer_names_the_units():
+    ex = gl.unit_explorer()
+    png = ex.update("liu_chen_transmission")
+    assert png[:4] == PNG and "transmission" in ex.text.lower()
+    assert ex.update("car_differential") != png
+
+
+def test_transmission_explorer_gives_the_gear_ratio():
+    mech = gl.catalog.load("liu_chen_transmission")
+    ex = gl.unit_widgets.transmission_explorer(mech, gl.transmission.LIU_CHEN_MODES)
+    table = gl.shift_table(mech, gl.transmission.LIU_CHEN_MODES)
+    for row in table.rows:
+        png = ex.update(mode=row.mode.name)
+        assert png[:4] == PNG
+        assert str(row.ratio) in ex.text or f"{float(row.ratio):.4f}" in ex.text
+
+
+def test_cornering_and_dgm_explorers_draw_two_different_frames():
+    car = gl.cornering_explorer()
+    assert car.update(speed=30, turn="right") != car.update(speed=60, turn="left")
+    dgm = gl.dgm_explorer([gl.catalog.load("cyl_gkc_8")])
+    assert dgm.update(ground=0, terminals=(1, 2, 3))[:4] == PNG
+
+
+def test_efficiency_explorer_reports_the_laus_efficiency():
+    epi = gl.catalog.load("laus_epicyclic")
+    ex = efficiency_explorer(epi, 1, 5, 2, eta={(1, 3): 0.99, (2, 3): 0.99})
+    assert ex.update()[:4] == PNG
+    assert "0.94621" in ex.text  # Laus (2011), eq. (76) at z = 80, 60, 30, 35
+
+
+@pytest.mark.parametrize("keep", [False, True])
+def test_canvas_panels_and_frames(keep):
+    import matplotlib.pyplot as plt
+
+    before = plt.get_fignums()
+    canvas = Canvas(panels=2, width_ratios=[1, 2], keep_axes=keep)
+    a = canvas.png(lambda ax: ax.plot([0, 1], [0, 1]), lambda ax: ax.bar([0], [1]))
+    b = canvas.png(lambda ax: ax.plot([0, 1], [1, 0]), lambda ax: ax.bar([0], [1]))
+    assert a[:4] == b[:4] == PNG and a != b
+    assert len(canvas.axes[0].lines) == 1  # the first frame's line is gone
+    assert plt.get_fignums() == before
