@@ -196,7 +196,7 @@ def symbolic():
     ours, r = _fresh(lambda m: gl.unit_ratio(m, output=8, input=4, ground=1, method="symbolic"), load_t)
 
     def naive_t3(m):
-        sol, w = _naive_speeds(m, 1, {4: 1}, [k for k in m.link_ids if k != 1])
+        sol, w = _naive_speeds(m, 1, {4: 1}, list(m.link_ids))
         return sympy.factor(sol[w[8]])
 
     base, r_naive = _fresh(naive_t3, load_t)

@@ -327,7 +327,7 @@ class RatioRing:
         self.one = _Ratio(ring.one, ring.one)
 
     def from_sympy(self, expr):
-        num, den = sympy.fraction(sympy.together(expr))
+        num, den = sympy.sympify(expr).as_numer_denom()
         return _Ratio(self.ring.from_expr(num), self.ring.from_expr(den))
 
     def convert(self, value):

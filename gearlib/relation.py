@@ -196,16 +196,25 @@ def _ratio_field(mech: Mechanism):
 
 
 def _factored(field, v):
-    """A ratio as sympy's ``factor`` prints it, factored in the polynomial ring."""
+    """A ratio as sympy's ``factor`` prints it: numerator and denominator factored in the
+    polynomial ring (multilinear ones quickly, :mod:`gearlib._multilinear`), common factors
+    cancelled, so no separate gcd is needed."""
+    from collections import Counter
+
+    from ._multilinear import factor_list
+
     if not v:
         return sympy.Integer(0)
-    num, den = v.reduced()
-    (cn, fn), (cd, fd) = num.factor_list(), den.factor_list()
-    out = sympy.Rational(int(cn), int(cd))
+    (cn, fn), (cd, fd) = factor_list(v.num), factor_list(v.den)
+    count: Counter = Counter()
     for f, k in fn:
-        out *= f.as_expr() ** k
+        count[f] += k
     for f, k in fd:
-        out /= f.as_expr() ** k
+        count[f] -= k
+    out = sympy.Rational(int(cn), int(cd))
+    for f, k in count.items():
+        if k:
+            out *= f.as_expr() ** k
     return out
 
 
