@@ -27,7 +27,7 @@ VENDOR := book/vendor
 VENDOR_STAMP := $(VENDOR)/_static/.staged
 CHROMIUM ?= $(shell command -v chromium || command -v chromium-browser || true)
 
-.PHONY: help venv vendor lint unit notebooks book build-book browser chromium test lab bench strip clean
+.PHONY: help venv vendor lint unit notebooks book build-book browser chromium test lab bench nbval-repeat strip clean
 
 help:
 	@echo "make book     build the HTML book into book/_build/html (creates .venv if needed)"
@@ -35,6 +35,7 @@ help:
 	@echo "make lab      open JupyterLab at the book's start"
 	@echo "make browser  open every page of the built book in headless Chromium, offline"
 	@echo "make bench    speed benchmarks (benchmarks/)"
+	@echo "make nbval-repeat  run every notebook three times; fail if an output changes"
 	@echo "make strip    remove outputs from every notebook before committing"
 
 $(STAMP): environment.txt pyproject.toml
@@ -114,6 +115,10 @@ lab: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
+
+# Determinism: every notebook three times in fresh kernels; outputs nbval compares must not change.
+nbval-repeat: $(STAMP)
+	$(BIN)/python tests/notebook_tools.py repeat 3 $(wildcard $(NOTEBOOKS))
 
 strip: $(STAMP)
 	$(BIN)/python tests/notebook_tools.py strip $(wildcard $(NOTEBOOKS))

@@ -29,6 +29,7 @@ from .adjacency import speed_ratio_matrix
 from .errors import DataFormatError, InputError
 from .frequencies import FrequencyTable, frequency_table, plot_spectrum
 from .mechanism import Mechanism
+from .widgets import Explorer
 
 __all__ = ["wheel_speeds", "CorneringExplorer", "cornering_explorer", "plot_cornering", "WHEEL_RADIUS", "TRACK"]
 
@@ -88,7 +89,7 @@ def _plot_link_speeds(solution, ax, title=None):
     return ax
 
 
-class CorneringExplorer:
+class CorneringExplorer(Explorer):
     """Car speed and turn radius -> wheel speeds -> every link's speed (Penaud's
     ``Omega = Omega_0 Lambda``) -> the frequency spectrum.
 
@@ -108,12 +109,9 @@ class CorneringExplorer:
         self.convention = convention
         # Omega_0, normalised to the two wheels: every link's speed is Omega_0 @ [omega_right, omega_left]
         self.ratios = speed_ratio_matrix(m, zero_speed=[self.ground], normalize_to=[self.right, self.left])
-        self.image = b""
-        self.text = ""
+        self._start()
         self.table: FrequencyTable | None = None
         self.speeds = None
-        self._widget = None
-        self._canvas = None
 
     def compute(self, speed=30.0, turn_radius=10.5, turn="right"):
         """The solution (every link's speed) and the frequency table at one operating point."""
@@ -152,32 +150,17 @@ class CorneringExplorer:
                                   width_ratios=[1, 1.5], wspace=0.25, keep_axes=True)
         self.image = self._canvas.png(lambda ax: _plot_link_speeds(sol, ax, "speeds, frame fixed"),
                                       lambda ax: plot_spectrum(table, ax=ax, title="contact frequencies"))
-        if self._widget is not None:
-            self._image_widget.value = self.image
-            self._label.value = self.text
+        self._show()
         return self.image
 
-    @property
-    def widget(self):
-        """The ipywidgets view (made on first use)."""
-        if self._widget is None:
-            import ipywidgets as w
-
-            self.update()
-            self._image_widget = w.Image(value=self.image, format="png")
-            self._label = w.Label(value=self.text)
-            self._speed = w.FloatSlider(value=30, min=0, max=130, step=5, description="km/h",
+    def controls(self, w) -> list:
+        self._speed = w.FloatSlider(value=30, min=0, max=130, step=5, description="km/h", continuous_update=False)
+        self._radius = w.FloatLogSlider(value=10.5, base=10, min=0.6, max=3, step=0.02, description="radius (m)",
                                         continuous_update=False)
-            self._radius = w.FloatLogSlider(value=10.5, base=10, min=0.6, max=3, step=0.02,
-                                            description="radius (m)", continuous_update=False)
-            self._turn = w.ToggleButtons(options=["left", "straight", "right"], value="right", description="turn")
-            for s in (self._speed, self._radius, self._turn):
-                s.observe(lambda change: self.update(self._speed.value, self._radius.value, self._turn.value), "value")
-            self._widget = w.VBox([w.HBox([self._speed, self._radius]), self._turn, self._label, self._image_widget])
-        return self._widget
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+        self._turn = w.ToggleButtons(options=["left", "straight", "right"], value="right", description="turn")
+        for s in (self._speed, self._radius, self._turn):
+            s.observe(lambda change: self.update(self._speed.value, self._radius.value, self._turn.value), "value")
+        return [w.HBox([self._speed, self._radius]), self._turn]
 
 
 def cornering_explorer(mech: Mechanism | None = None, **kwargs) -> CorneringExplorer:

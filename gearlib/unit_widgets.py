@@ -16,6 +16,7 @@ from __future__ import annotations
 
 
 from .mechanism import Mechanism
+from .widgets import Explorer
 
 __all__ = ["UnitExplorer", "unit_explorer", "TransmissionExplorer", "transmission_explorer"]
 
@@ -33,17 +34,16 @@ def _geared_names() -> list[str]:
     return [n for n in catalog.names() if catalog.load(n).gear_pairs]
 
 
-class UnitExplorer:
+class UnitExplorer(Explorer):
     """Pick a catalogue mechanism; see its graph with the kinematic units in colour and the
     common linkages marked (:func:`gearlib.unit_plot.draw_units`), and a list of the units."""
+
+    html_text = True  # the units are named in their colours
 
     def __init__(self, names=None, *, start=None):
         self.names = list(names) if names is not None else _geared_names()
         self.name = start or ("liu_chen_fig1" if "liu_chen_fig1" in self.names else self.names[0])
-        self.image = b""
-        self.text = ""
-        self._widget = None
-        self._canvas = None
+        self._start()
         self._pos: dict = {}
 
     def update(self, name: str | None = None) -> bytes:
@@ -71,26 +71,13 @@ class UnitExplorer:
             self._pos[self.name] = graph_layout(frac.mechanism)
         pos = self._pos[self.name]
         self.image = self._canvas.png(lambda ax: draw_units(frac, ax=ax, pos=pos, font_size=9, legend=False, title=""))
-        if self._widget is not None:
-            self._image.value = self.image
-            self._label.value = self.text
+        self._show()
         return self.image
 
-    @property
-    def widget(self):
-        if self._widget is None:
-            import ipywidgets as w
-
-            self.update()
-            self._image = w.Image(value=self.image, format="png")
-            self._label = w.HTML(value=self.text)
-            pick = w.Dropdown(options=self.names, value=self.name, description="mechanism")
-            pick.observe(lambda change: self.update(change["new"]), "value")
-            self._widget = w.VBox([pick, self._label, self._image])
-        return self._widget
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+    def controls(self, w) -> list:
+        pick = w.Dropdown(options=self.names, value=self.name, description="mechanism")
+        pick.observe(lambda change: self.update(change["new"]), "value")
+        return [pick]
 
 
 def unit_explorer(names=None, *, start=None) -> UnitExplorer:
@@ -99,7 +86,7 @@ def unit_explorer(names=None, *, start=None) -> UnitExplorer:
     return UnitExplorer(names, start=start)
 
 
-class TransmissionExplorer:
+class TransmissionExplorer(Explorer):
     """Choose a gear (operating mode) and tooth numbers; see the propagation path and the ratio
     by units, beside the null-space value."""
 
@@ -113,11 +100,8 @@ class TransmissionExplorer:
         self.pairs = [gp for gp in chosen if gp.teeth is not None]
         self.max_teeth = max_teeth
         self.teeth = {f"N_{g}_in_{gp.gears[0]}_{gp.gears[1]}": t for gp in self.pairs for g, t in zip(gp.gears, gp.teeth)}
-        self.image = b""
-        self.text = ""
+        self._start()
         self.ratio = None
-        self._widget = None
-        self._canvas = None
 
     def mechanism_for(self, **teeth) -> Mechanism:
         values = self.teeth | teeth
@@ -155,33 +139,15 @@ class TransmissionExplorer:
         if self._canvas is None:
             self._canvas = _graph_canvas(figsize=(5.4, 2.4))
         self.image = self._canvas.png(lambda ax: draw_propagation(prop, ax=ax, title=""))
-        if self._widget is not None:
-            self._image.value = self.image
-            self._label.value = self.text
+        self._show()
         return self.image
 
-    @property
-    def widget(self):
-        if self._widget is None:
-            import ipywidgets as w
-
-            self.update()
-            self._image = w.Image(value=self.image, format="png")
-            self._label = w.Label(value=self.text)
-            pick = w.ToggleButtons(options=list(self.modes), value=self.mode, description="gear")
-            pick.observe(lambda change: self.update(change["new"]), "value")
-            sliders = []
-            for key, value in self.teeth.items():
-                s = w.IntSlider(value=value, min=8, max=self.max_teeth, description=key.split("_in_")[0],
-                                continuous_update=False)
-                s.observe(lambda change, key=key: self.update(**{key: change["new"]}), "value")
-                sliders.append(s)
-            rows = [w.HBox(sliders[i:i + 3]) for i in range(0, len(sliders), 3)]
-            self._widget = w.VBox([pick, *rows, self._label, self._image])
-        return self._widget
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+    def controls(self, w) -> list:
+        pick = w.ToggleButtons(options=list(self.modes), value=self.mode, description="gear")
+        pick.observe(lambda change: self.update(change["new"]), "value")
+        sliders = {key: w.IntSlider(value=value, min=8, max=self.max_teeth, description=key.split("_in_")[0],
+                                    continuous_update=False) for key, value in self.teeth.items()}
+        return [pick, *self._slider_rows(w, sliders, per_row=3)]
 
 
 def transmission_explorer(mech: Mechanism, modes, *, pairs=None, max_teeth: int = 120) -> TransmissionExplorer:

@@ -22,7 +22,7 @@ import io
 from .kinematics import speeds
 from .mechanism import Mechanism
 
-__all__ = ["Canvas", "SpeedExplorer", "speed_explorer", "render_png"]
+__all__ = ["Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "render_png"]
 
 
 class Canvas:
@@ -74,7 +74,59 @@ def render_png(draw, figsize=(6.0, 3.2), dpi=80, margins=(0.1, 0.98, 0.22, 0.9))
     return Canvas(figsize, dpi, margins).png(draw)
 
 
-class SpeedExplorer:
+class Explorer:
+    """What every widget of the book shares.
+
+    A subclass computes and redraws in ``update(...)``, which sets :attr:`image` (PNG bytes)
+    and :attr:`text` and works without a browser (tests and benchmarks call it); it ends with
+    :meth:`_show`. :attr:`widget` is the ipywidgets view, made on first use: the controls
+    that :meth:`controls` returns, a line of text, and the picture. Displaying the object
+    in JupyterLab shows the view.
+    """
+
+    html_text = False  # the text line is HTML (colours) rather than plain text
+
+    def _start(self):
+        self.image = b""
+        self.text = ""
+        self._widget = None
+        self._canvas = None
+
+    def _show(self):
+        """Push :attr:`image` and :attr:`text` to the view, if it exists."""
+        if self._widget is not None:
+            self._image_widget.value = self.image
+            self._label.value = self.text
+
+    def controls(self, w) -> list:
+        """The ipywidgets controls above the text and picture (*w* is ``ipywidgets``)."""
+        return []
+
+    def _slider_rows(self, w, sliders: dict, per_row: int = 2) -> list:
+        """Rows of *sliders* (name -> slider); moving any calls ``update`` with all their values."""
+        self._sliders = sliders
+        for s in sliders.values():
+            s.observe(lambda change: self.update(**{k: v.value for k, v in self._sliders.items()}), "value")
+        items = list(sliders.values())
+        return [w.HBox(items[i:i + per_row]) for i in range(0, len(items), per_row)]
+
+    @property
+    def widget(self):
+        """The ipywidgets view (made on first use)."""
+        if self._widget is None:
+            import ipywidgets as w
+
+            self.update()
+            self._image_widget = w.Image(value=self.image, format="png")
+            self._label = (w.HTML if self.html_text else w.Label)(value=self.text)
+            self._widget = w.VBox([*self.controls(w), self._label, self._image_widget])
+        return self._widget
+
+    def _repr_mimebundle_(self, **kwargs):
+        return self.widget._repr_mimebundle_(**kwargs)
+
+
+class SpeedExplorer(Explorer):
     """Sliders for tooth numbers; shows every link's speed (:func:`gearlib.plot.plot_speeds`).
 
     Use :meth:`update` to compute and redraw without a browser (this is what a slider
@@ -88,10 +140,7 @@ class SpeedExplorer:
         chosen = mech.gear_pairs if pairs is None else [mech.gear_pair(*p)[0] for p in pairs]
         self.pairs = [gp for gp in chosen if gp.teeth is not None]
         self.max_teeth = max_teeth
-        self.image = b""
-        self.text = ""
-        self._widget = None
-        self._canvas = None
+        self._start()
 
     def keys(self) -> list[str]:
         """Slider names: ``N_<gear>_in_<a>_<b>`` for each tooth number."""
@@ -121,37 +170,14 @@ class SpeedExplorer:
         if self._canvas is None:
             self._canvas = Canvas()
         self.image = self._canvas.png(lambda ax: plot_speeds(sol, ax=ax))
-        if self._widget is not None:
-            self._image_widget.value = self.image
-            self._label.value = self.text
+        self._show()
         return self.image
 
-    @property
-    def widget(self):
-        """The ipywidgets view (made on first use)."""
-        if self._widget is None:
-            import ipywidgets as w
-
-            self.update()
-            self._image_widget = w.Image(value=self.image, format="png")
-            self._label = w.Label(value=self.text)
-            sliders = []
-            for key, value in self.current().items():
-                s = w.IntSlider(value=value, min=5, max=self.max_teeth, description=key.split("_in_")[0],
-                                continuous_update=False, tooltip=key)
-                s.observe(lambda change: self.update(**self._slider_values()), "value")
-                sliders.append((key, s))
-            self._sliders = dict(sliders)
-            self._widget = w.VBox([w.HBox([s for _, s in sliders[i:i + 2]]) for i in range(0, len(sliders), 2)]
-                                  + [self._label, self._image_widget])
-        return self._widget
-
-    def _slider_values(self) -> dict:
-        return {k: s.value for k, s in self._sliders.items()}
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
-
+    def controls(self, w) -> list:
+        return self._slider_rows(w, {key: w.IntSlider(value=value, min=5, max=self.max_teeth,
+                                                      description=key.split("_in_")[0], continuous_update=False,
+                                                      tooltip=key)
+                                     for key, value in self.current().items()})
 
 def speed_explorer(mech: Mechanism, ground=None, inputs=None, *, pairs=None, max_teeth: int = 120) -> SpeedExplorer:
     """A widget: tooth-number sliders for ``pairs`` (default: all) and a bar chart of every

@@ -1,6 +1,12 @@
-"""Notebook housekeeping used by `make strip` and by the tests.
+"""Notebook housekeeping used by `make strip`, `make nbval-repeat` and by the tests.
 
     python tests/notebook_tools.py strip chapters exercises book/solutions
+    python tests/notebook_tools.py repeat 3 chapters exercises book/solutions
+
+``repeat N`` executes every notebook N times, each in a fresh kernel (two at a time), and
+compares what nbval would compare: text, LaTeX and SVG outputs after the sanitize rules of
+``tests/nbval_sanitize.cfg``, except in cells tagged ``nbval-ignore-output`` (timings). It
+prints each cell whose output changed between runs and exits 1 if any did.
 """
 
 from __future__ import annotations
@@ -50,10 +56,85 @@ def strip(path: pathlib.Path) -> bool:
     return False
 
 
+COMPARED = ("text/plain", "text/latex", "text/markdown", "image/svg+xml")
+
+
+def sanitize_rules(path: pathlib.Path = ROOT / "tests" / "nbval_sanitize.cfg") -> list:
+    """``[(compiled regex, replacement)]`` from an nbval sanitize file."""
+    import re
+
+    rules, regex = [], None
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if line.startswith("regex:"):
+            regex = line.split(":", 1)[1].strip()
+        elif line.startswith("replace:") and regex is not None:
+            rules.append((re.compile(regex), line.split(":", 1)[1].strip()))
+            regex = None
+    return rules
+
+
+def compared_outputs(path: pathlib.Path) -> list:
+    """Execute *path* in a fresh kernel; per code cell, the sanitized outputs nbval compares
+    (None for cells tagged ``nbval-ignore-output``)."""
+    import nbformat
+    from nbclient import NotebookClient
+
+    nb = nbformat.read(path, as_version=4)
+    NotebookClient(nb, timeout=600, kernel_name="python3",
+                   resources={"metadata": {"path": str(path.parent)}}).execute()
+    rules = sanitize_rules()
+    out = []
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        if "nbval-ignore-output" in cell.get("metadata", {}).get("tags", []):
+            out.append(None)
+            continue
+        parts = []
+        for o in cell.outputs:
+            texts = [o.get("text", "")] if o.output_type == "stream" else [
+                f"{k}: {o.data[k]}" for k in COMPARED if k in o.get("data", {})]
+            if o.output_type == "error":
+                texts = [f"{o.ename}: {o.evalue}"]
+            for text in texts:
+                for regex, replacement in rules:
+                    text = regex.sub(replacement, text)
+                parts.append(text)
+        out.append(parts)
+    return out
+
+
+def repeat(runs: int, dirs) -> int:
+    """Run every notebook *runs* times; report cells whose outputs differ. Returns 0 or 1."""
+    from concurrent.futures import ProcessPoolExecutor
+
+    paths = notebooks(dirs)
+    jobs = [(p, k) for k in range(runs) for p in paths]
+    with ProcessPoolExecutor(max_workers=2) as pool:
+        results = list(pool.map(compared_outputs, [p for p, _ in jobs]))
+    by_path: dict = {}
+    for (p, _), r in zip(jobs, results):
+        by_path.setdefault(p, []).append(r)
+    changed = 0
+    for p, runs_of_p in by_path.items():
+        first = runs_of_p[0]
+        for i, cell in enumerate(first):
+            if any(r[i] != cell for r in runs_of_p[1:]):
+                changed += 1
+                print(f"{p.relative_to(ROOT)}: code cell {i + 1} printed different output between runs")
+    print(f"{len(paths)} notebooks x {runs} runs: {changed} cell(s) with output that changed")
+    return 1 if changed else 0
+
+
 if __name__ == "__main__":
-    if len(sys.argv) < 2 or sys.argv[1] != "strip":
+    command = sys.argv[1] if len(sys.argv) > 1 else ""
+    if command == "strip":
+        dirs = sys.argv[2:] or NOTEBOOK_DIRS
+        for p in notebooks([pathlib.Path(d).resolve().relative_to(ROOT) for d in dirs]):
+            if strip(p):
+                print(f"stripped {p.relative_to(ROOT)}")
+    elif command == "repeat" and len(sys.argv) > 2:
+        dirs = sys.argv[3:] or NOTEBOOK_DIRS
+        sys.exit(repeat(int(sys.argv[2]), [pathlib.Path(d).resolve().relative_to(ROOT) for d in dirs]))
+    else:
         sys.exit(__doc__)
-    dirs = sys.argv[2:] or NOTEBOOK_DIRS
-    for p in notebooks([pathlib.Path(d).resolve().relative_to(ROOT) for d in dirs]):
-        if strip(p):
-            print(f"stripped {p.relative_to(ROOT)}")

@@ -56,6 +56,9 @@ def test_file_loader(tmp_path, name, text, error, message):
 PLAN = gl.catalog.simple_planetary()
 DIFF = gl.catalog.car_differential()
 WRIST = gl.catalog.robotic_wrist()
+TRANS = gl.catalog.load("liu_chen_transmission")
+EPI = gl.catalog.load("laus_epicyclic")
+GKC8 = gl.catalog.load("cyl_gkc_8")
 API = [
     ("too few inputs", lambda: gl.speeds(DIFF, ground=1, inputs={3: 1}), gl.InputError, "needs 2 inputs"),
     ("too many inputs", lambda: gl.speeds(PLAN, ground=3, inputs={1: 1, 2: 1}), gl.InputError, "needs 1 input"),
@@ -84,6 +87,39 @@ API = [
         "gear_pairs": [{"gears": [1, 2], "teeth": [20, 30]}, {"gears": [2, 3], "teeth": [30, 40]},
                        {"gears": [3, 1], "teeth": [40, 20]}]}), gl.OverconstrainedError, "locks its gears"),
     ("not a dict", lambda: gl.Mechanism.from_dict([1, 2, 3]), gl.DataFormatError, "must be a mapping"),
+    # chapter 3: unit-by-unit gains
+    ("gains: one input for two freedoms", lambda: gl.unit_ratio(DIFF, output=2, input=3, ground=1), gl.InputError,
+     "needs 2 inputs"),
+    ("gains: unknown method", lambda: gl.propagate(PLAN, output=4, inputs=[1], ground=3).relation("fast"),
+     gl.InputError, "method must be one of"),
+    ("gains: unknown output", lambda: gl.unit_ratio(PLAN, output=44, input=1, ground=3), gl.UnknownLinkError,
+     "link 44"),
+    ("shift table: mode not a mapping", lambda: gl.shift_table(TRANS, [("4th", 9, 2, 8)]), gl.DataFormatError,
+     "expected a mapping"),
+    # chapter 4: frequencies and cornering
+    ("frequencies: NaN speed", lambda: gl.frequency_table(DIFF, ground=1, inputs={3: math.nan, 4: 1}),
+     gl.DataFormatError, "not a finite number"),
+    ("cornering: zero turn radius", lambda: gl.wheel_speeds(speed=30, turn_radius=0), gl.InputError,
+     "non-zero radius"),
+    ("bearing: balls larger than the pitch circle",
+     lambda: gl.Bearing(pitch_diameter=10, ball_diameter=20, balls=8), gl.DataFormatError, "must be smaller"),
+    # chapter 5: Davies' efficiency
+    ("efficiency: two freedoms", lambda: gl.efficiency(gl.catalog.load("ravigneaux"), ground=0, input=1, output=2,
+                                                       eta=0.98), gl.ConstraintError, "Davies' efficiency needs one"),
+    ("efficiency: above one", lambda: gl.efficiency(EPI, 1, 5, 2, eta=1.5), gl.InputError, "must be in (0, 1]"),
+    ("efficiency: NaN", lambda: gl.efficiency(EPI, 1, 5, 2, eta=math.nan), gl.InputError, "must be in (0, 1]"),
+    ("efficiency: input is output", lambda: gl.efficiency(EPI, 1, 5, 5, eta=0.98), gl.InputError,
+     "choose two different links"),
+    ("efficiency: unknown output", lambda: gl.efficiency(EPI, 1, 5, 77, eta=0.98), gl.UnknownLinkError, "output 77"),
+    # chapter 6: differential synthesis
+    ("dgm: unknown terminal", lambda: gl.terminal_constraint(GKC8, (1, 2, 99), ground=0), gl.UnknownLinkError,
+     "terminal 99"),
+    ("dgm: the ground as a terminal", lambda: gl.terminal_constraint(GKC8, (0, 1, 2), ground=0), gl.InputError,
+     "cannot also be a terminal"),
+    ("dgm: a terminal twice", lambda: gl.terminal_constraint(GKC8, (1, 1, 2), ground=0), gl.InputError,
+     "name a link twice"),
+    # timing helper of chapter 3
+    ("scaling: unknown method", lambda: gl.scaling.scaling("qr", (10,)), gl.InputError, "unknown method 'qr'"),
 ]
 
 
@@ -104,6 +140,18 @@ CLI = [
     (["dof", "EMPTY"], "empty"),
     (["dof", "NOT_A_MAPPING"], "top level must be a mapping"),
     (["catalog", "no_such_entry"], "no catalogue entry"),
+    (["units", "missing.yaml"], "no such file"),
+    (["units", "EMPTY"], "empty"),
+    (["gains", "liu_chen_transmission", "--ground", "1", "--input", "4", "--output", "99"], "is not a link"),
+    (["gains", "car_differential", "--ground", "1", "--input", "3", "--output", "2"], "needs 2 inputs"),
+    (["frequencies", "car_differential", "--ground", "1", "--input", "3=1"], "needs 2 inputs"),
+    (["frequencies", "car_differential", "--ground", "1", "--input", "3=inf", "--input", "4=1"], "not a number"),
+    (["dgm", "cyl_gkc_8", "--ground", "99"], "99"),
+    (["dgm", "NOT_A_MAPPING"], "top level must be a mapping"),
+    (["efficiency", "laus_epicyclic", "--ground", "1", "--input", "5", "--output", "2", "--eta", "1.5"],
+     "must be in (0, 1]"),
+    (["efficiency", "laus_epicyclic", "--ground", "1", "--input", "5", "--output", "5"], "two different links"),
+    (["efficiency", "ravigneaux", "--ground", "0", "--input", "1", "--output", "2"], "needs one"),
 ]
 
 

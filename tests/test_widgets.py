@@ -63,3 +63,44 @@ def test_canvas_panels_and_frames(keep):
     assert a[:4] == b[:4] == PNG and a != b
     assert len(canvas.axes[0].lines) == 1  # the first frame's line is gone
     assert plt.get_fignums() == before
+
+
+def _controls(view):
+    import ipywidgets as w
+
+    stack, found = [view], []
+    while stack:
+        x = stack.pop(0)
+        if isinstance(x, (w.IntSlider, w.FloatSlider, w.FloatLogSlider, w.Dropdown, w.ToggleButtons)):
+            found.append(x)
+        stack.extend(getattr(x, "children", ()))
+    return found
+
+
+def _explorers():
+    mech = gl.catalog.load("liu_chen_transmission")
+    return [
+        gl.widgets.speed_explorer(gl.catalog.simple_planetary(), ground=3, inputs={1: 1}),
+        gl.unit_explorer(),
+        gl.unit_widgets.transmission_explorer(mech, gl.transmission.LIU_CHEN_MODES),
+        gl.cornering_explorer(),
+        efficiency_explorer(gl.catalog.load("laus_epicyclic"), 1, 5, 2),
+    ]
+
+
+@pytest.mark.parametrize("index", range(5))
+def test_moving_the_first_control_redraws_the_view(index):
+    """What a reader's first slider move does in JupyterLab, without the browser."""
+    import ipywidgets as w
+
+    ex = _explorers()[index]
+    view = ex.widget
+    image = next(x for x in view.children if isinstance(x, w.Image))
+    before = image.value
+    control = _controls(view)[0]
+    if isinstance(control, (w.Dropdown, w.ToggleButtons)):
+        options = [o[1] if isinstance(o, tuple) else o for o in control.options]
+        control.value = options[(options.index(control.value) + 1) % len(options)]
+    else:
+        control.value = control.max if control.value != control.max else control.min
+    assert image.value[:4] == PNG and image.value != before

@@ -12,6 +12,7 @@ from __future__ import annotations
 import sympy
 
 from ..mechanism import Mechanism
+from ..widgets import Explorer
 from .overall import efficiency
 
 __all__ = ["EfficiencyExplorer", "efficiency_explorer", "with_teeth"]
@@ -34,7 +35,7 @@ def with_teeth(mech: Mechanism, pair, gear, teeth: int) -> Mechanism:
     return mech.with_gear_pair(gp.gears, **changes)
 
 
-class EfficiencyExplorer:
+class EfficiencyExplorer(Explorer):
     """Sliders for tooth numbers and ordinary efficiencies; shows the power flows
     (:func:`gearlib.davies.plot_power_flow`) and the overall efficiency."""
 
@@ -46,11 +47,8 @@ class EfficiencyExplorer:
         self.eta = {gp.gears: float(eta if not isinstance(eta, dict) else eta.get(gp.gears, 0.98))
                     for gp in mech.gear_pairs}
         self.max_teeth = max_teeth
-        self.image = b""
-        self.text = ""
+        self._start()
         self.result = None
-        self._widget = None
-        self._canvas = None
 
     def keys(self) -> list[str]:
         """Slider names: ``N_<gear>_in_<a>_<b>`` for teeth and ``eta_<a>_<b>`` for each mesh."""
@@ -89,40 +87,19 @@ class EfficiencyExplorer:
             self.image = self._canvas.png(lambda ax: plot_power_flow(self.result, ax=ax))
         except ValueError as err:  # a GearlibError: say it, keep the last picture
             self.text = f"cannot compute: {err}"
-        if self._widget is not None:
-            self._image_widget.value = self.image
-            self._label.value = self.text
+        self._show()
         return self.image
 
-    @property
-    def widget(self):
-        """The ipywidgets view (made on first use)."""
-        if self._widget is None:
-            import ipywidgets as w
-
-            self.update()
-            self._image_widget = w.Image(value=self.image, format="png")
-            self._label = w.Label(value=self.text)
-            sliders = []
-            for key, value in self.current().items():
-                if key.startswith("N_"):
-                    s = w.IntSlider(value=value, min=5, max=self.max_teeth, description=key.split("_in_")[0],
-                                    continuous_update=False)
-                else:
-                    s = w.FloatSlider(value=value, min=0.9, max=1.0, step=0.001, description=key,
-                                      continuous_update=False, readout_format=".3f")
-                s.observe(lambda change: self.update(**self._slider_values()), "value")
-                sliders.append((key, s))
-            self._sliders = dict(sliders)
-            boxes = [w.HBox([s for _, s in sliders[i:i + 2]]) for i in range(0, len(sliders), 2)]
-            self._widget = w.VBox(boxes + [self._label, self._image_widget])
-        return self._widget
-
-    def _slider_values(self) -> dict:
-        return {k: s.value for k, s in self._sliders.items()}
-
-    def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+    def controls(self, w) -> list:
+        sliders = {}
+        for key, value in self.current().items():
+            if key.startswith("N_"):
+                sliders[key] = w.IntSlider(value=value, min=5, max=self.max_teeth, description=key.split("_in_")[0],
+                                           continuous_update=False)
+            else:
+                sliders[key] = w.FloatSlider(value=value, min=0.9, max=1.0, step=0.001, description=key,
+                                             continuous_update=False, readout_format=".3f")
+        return self._slider_rows(w, sliders)
 
 
 def efficiency_explorer(mech: Mechanism, ground, input, output, *, pairs=None, eta=0.98,
