@@ -23,6 +23,9 @@ def notebooks(dirs=NOTEBOOK_DIRS) -> list[pathlib.Path]:
     """Every committed notebook under the given directories (build output excluded)."""
     out = []
     for d in dirs:
+        if (ROOT / d).is_file():
+            out.append(ROOT / d)
+            continue
         for p in sorted((ROOT / d).rglob("*.ipynb")):
             if "_build" in p.parts or ".ipynb_checkpoints" in p.parts:
                 continue
@@ -91,7 +94,7 @@ def compared_outputs(path: pathlib.Path) -> list:
             out.append(None)
             continue
         parts = []
-        for o in cell.outputs:
+        for o in _coalesce_streams(cell.outputs):
             texts = [o.get("text", "")] if o.output_type == "stream" else [
                 f"{k}: {o.data[k]}" for k in COMPARED if k in o.get("data", {})]
             if o.output_type == "error":
@@ -101,6 +104,19 @@ def compared_outputs(path: pathlib.Path) -> list:
                     text = regex.sub(replacement, text)
                 parts.append(text)
         out.append(parts)
+    return out
+
+
+def _coalesce_streams(outputs) -> list:
+    """Join consecutive stream outputs of the same stream, as nbval does: how printed text
+    is split into messages depends on timing, not on the notebook."""
+    out = []
+    for o in outputs:
+        if o.output_type == "stream" and out and out[-1].output_type == "stream" and out[-1].name == o.name:
+            out[-1] = {**out[-1], "text": out[-1]["text"] + o.text}
+            out[-1] = type(o)(out[-1])
+        else:
+            out.append(o)
     return out
 
 
@@ -119,9 +135,15 @@ def repeat(runs: int, dirs) -> int:
     for p, runs_of_p in by_path.items():
         first = runs_of_p[0]
         for i, cell in enumerate(first):
-            if any(r[i] != cell for r in runs_of_p[1:]):
+            other = next((r[i] for r in runs_of_p[1:] if r[i] != cell), None)
+            if other is not None:
+                import difflib
+
                 changed += 1
                 print(f"{p.relative_to(ROOT)}: code cell {i + 1} printed different output between runs")
+                diff = difflib.unified_diff("\n".join(cell).splitlines(), "\n".join(other).splitlines(), lineterm="",
+                                            n=0)
+                print("    " + "\n    ".join(list(diff)[2:8]))
     print(f"{len(paths)} notebooks x {runs} runs: {changed} cell(s) with output that changed")
     return 1 if changed else 0
 
