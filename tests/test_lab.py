@@ -65,9 +65,12 @@ def lab():
         tmp = pathlib.Path(tmp)
         shutil.copytree(ROOT / "chapters", tmp / "root" / "chapters",
                         ignore=shutil.ignore_patterns(".ipynb_checkpoints"))
-        # never autosave (and so never write a notebook); no question about Jupyter news
+        # never autosave (and so never write a notebook); no question about Jupyter news; keep
+        # every cell in the page (JupyterLab 4 otherwise detaches cells scrolled out of view,
+        # and a widget cell's output area would be missing when the test reads it)
         for plugin, value in (("docmanager-extension/plugin", {"autosave": False}),
-                              ("apputils-extension/notification", {"fetchNews": "false"})):
+                              ("apputils-extension/notification", {"fetchNews": "false"}),
+                              ("notebook-extension/tracker", {"windowingMode": "none"})):
             path = tmp / "settings" / "@jupyterlab" / f"{plugin}.jupyterlab-settings"
             path.parent.mkdir(parents=True, exist_ok=True)
             path.write_text(json.dumps(value))
@@ -126,7 +129,8 @@ CELLS = """
            .forEach(o => out.errors.push(`code cell ${i + 1}: ${o.ename}: ${o.evalue}`));
     if (outputs.some(o => o.data && o.data['WIDGET_VIEW'])) {
       const view = cell.node.querySelector('.jp-OutputArea-output .jupyter-widgets');
-      const text = cell.node.querySelector('.jp-OutputArea').textContent;
+      const area = cell.node.querySelector('.jp-OutputArea');
+      const text = area ? area.textContent : '';
       const box = view ? view.getBoundingClientRect() : {width: 0, height: 0};
       out.widgets.push({cell: i, rendered: !!view && box.height > 10,
                         failed: /Error displaying widget|Loading widget/.test(text),
