@@ -257,9 +257,8 @@ def widget_callbacks():
                             [{"name": n} for n in names]))
     mech = gl.catalog.load("liu_chen_transmission")
     modes = gl.transmission.LIU_CHEN_MODES
-    rows.append(_widget_row("transmission explorer (choose a gear)",
-                            gl.unit_widgets.transmission_explorer(mech, modes),
-                            [{"mode": m.name} for m in modes]))
+    gears = gl.unit_widgets.transmission_explorer(mech, modes)
+    rows.append(_widget_row("transmission explorer (choose a gear)", gears, [{"mode": m} for m in gears.modes]))
     rows.append(_widget_row("cornering explorer (speed slider)", gl.cornering_explorer(),
                             [{"speed": 20.0 + i, "turn": "right"} for i in range(40)]))
     chain = gl.catalog.load("cyl_gkc_8")
