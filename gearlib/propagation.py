@@ -347,15 +347,7 @@ def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joine
                 source = "input"
         checks = tuple(z for z in known if z not in (x, w))
         outputs = tuple(z for z in unit.links if z not in known_by)
-        s = Step(len(steps), unit, (x, w), anchor, source, feeds, outputs, checks, None, counter[0], chain)
-        counter[0] += 1
-        fired[i] = True
-        step_index[i] = s.index
-        steps.append(s)
-        for z in checks:
-            equations.append(("check", s.index, z))
-        for z in outputs:
-            make_known(z, ("step", s.index), s.order)
+        add_step(i, Step(len(steps), unit, (x, w), anchor, source, feeds, outputs, checks, None, counter[0], chain))
 
     def tear(i):
         unit = units[i]
@@ -382,14 +374,17 @@ def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joine
         n_tears[0] += 1
         checks = tuple(z for z in known if z != anchor)
         outputs = tuple(z for z in unit.links if z not in known_by)
-        s = Step(len(steps), unit, (x, w), anchor, "tear", (), outputs, checks, j, counter[0], None)
+        add_step(i, Step(len(steps), unit, (x, w), anchor, "tear", (), outputs, checks, j, counter[0], None))
+
+    def add_step(i, s):
+        """Record unit i's step: its consistency checks, and the links it makes known."""
         counter[0] += 1
         fired[i] = True
         step_index[i] = s.index
         steps.append(s)
-        for z in checks:
+        for z in s.checks:
             equations.append(("check", s.index, z))
-        for z in outputs:
+        for z in s.outputs:
             make_known(z, ("step", s.index), s.order)
 
     out_units = set(units_of.get(out[0], ())) | set(units_of.get(out[1], ())) if out else set()

@@ -79,6 +79,16 @@ def circuit_matrix(mech: Mechanism, *, ground) -> tuple[sympy.Matrix, tuple]:
     return willis_matrix(mech, symbolic=True, ground=ground), cols
 
 
+def _subtract(row: dict, factor, pivot: dict, fld) -> None:
+    """``row -= factor * pivot`` on sparse rows, dropping entries that become zero."""
+    for k, v in pivot.items():
+        new = row.get(k, fld.zero) - factor * v
+        if fld.is_zero(new):
+            row.pop(k, None)
+        else:
+            row[k] = new
+
+
 def _size(x) -> tuple:
     try:
         return (0 if x.numer.is_ground and x.denom.is_ground else 1, len(x.numer) + len(x.denom))
@@ -114,13 +124,7 @@ def _eliminate(mech: Mechanism, ground, terminals) -> tuple[list, object]:
         rows = [r for r in rows if r is not pivot]
         for r in rows:
             if j in r:
-                f = r[j] / pivot[j]
-                for k, v in pivot.items():
-                    new = r.get(k, fld.zero) - f * v
-                    if fld.is_zero(new):
-                        r.pop(k, None)
-                    else:
-                        r[k] = new
+                _subtract(r, r[j] / pivot[j], pivot, fld)
     out = []  # reduced row echelon form over the terminal columns
     for j in (where[t] for t in terminals):
         having = [r for r in rows if j in r]
@@ -132,13 +136,7 @@ def _eliminate(mech: Mechanism, ground, terminals) -> tuple[list, object]:
         pivot = {k: v * inv for k, v in pivot.items()}
         for r in rows + out:
             if j in r:
-                f = r[j]
-                for k, v in pivot.items():
-                    new = r.get(k, fld.zero) - f * v
-                    if fld.is_zero(new):
-                        r.pop(k, None)
-                    else:
-                        r[k] = new
+                _subtract(r, r[j], pivot, fld)
         out.append(pivot)
     return [[r.get(where[t], fld.zero) for t in terminals] for r in out], fld
 
