@@ -29,6 +29,7 @@ class Field:
     inv: callable
     zero: object
     name: str
+    domain: object = None  # the sympy domain, when there is one
 
 
 FRACTIONS = Field(
@@ -59,6 +60,7 @@ def domain_for(exprs) -> tuple[Field, list]:
         inv=lambda x, d=dom: d.quo(d.one, x),
         zero=dom.zero,
         name=str(dom),
+        domain=dom,
     )
     return field, list(elems)
 

@@ -141,8 +141,16 @@ def _eliminate(mech: Mechanism, ground, terminals) -> tuple[list, object]:
     return [[r.get(where[t], fld.zero) for t in terminals] for r in out], fld
 
 
-def _primitive(values: list) -> tuple:
-    """Coefficients cleared of denominators and common factors, first non-zero one positive."""
+def _primitive(values: list, elems=None, dom=None) -> tuple:
+    """Coefficients cleared of denominators and common factors, first non-zero one positive.
+
+    With the row's domain elements *elems* of a fraction field over the integers (the usual
+    case: symbolic ratios), the work is done in the polynomial ring (:func:`_primitive_ring`),
+    which gives the same expressions many times faster; sympy expressions otherwise."""
+    if elems is not None:
+        fast = _primitive_ring(elems, dom)
+        if fast is not None:
+            return fast
     values = [sympy.cancel(v) for v in values]
     den = sympy.lcm_list([sympy.fraction(v)[1] for v in values])
     nums = [sympy.cancel(v * den) for v in values]
@@ -154,6 +162,49 @@ def _primitive(values: list) -> tuple:
     return tuple(sympy.factor(n) for n in nums)
 
 
+def _primitive_ring(elems: list, dom) -> tuple | None:
+    """:func:`_primitive` over ``ZZ[e_a_b]``: lcm of the denominators, gcd of the numerators,
+    the sign of sympy's leading coefficient (lex order of the symbol names), each coefficient
+    factored as :func:`sympy.factor` prints it. None when *dom* is not ``ZZ(...)``."""
+    from ._multilinear import factor_list
+
+    if not (getattr(dom, "is_FractionField", False) and dom.domain.is_ZZ):
+        return None
+    ring = dom.field.ring
+    den = ring.one
+    for e in elems:
+        den = den.lcm(e.denom)
+    nums = [e.numer * den.exquo(e.denom) for e in elems]
+    common = ring.zero
+    for n in nums:
+        common = common.gcd(n) if n else common
+    if not common:
+        return None
+    nums = [n.exquo(common) for n in nums]
+    lead = next(n for n in nums if n)
+    order = sorted(range(ring.ngens), key=lambda i: str(ring.symbols[i]))
+
+    def negative(p):  # the leading coefficient in sympy's order (lex, symbols by name) is < 0
+        return p[max(p.itermonoms(), key=lambda m: tuple(m[i] for i in order))] < 0
+
+    if negative(next(n for n in nums if n)):
+        nums = [-n for n in nums]
+    out = []
+    for n in nums:
+        if not n:
+            out.append(sympy.Integer(0))
+            continue
+        const, factors = factor_list(n)
+        const = int(const)
+        expr = sympy.Integer(1)
+        for f, k in factors:
+            if negative(f):
+                f, const = -f, const * (-1) ** k
+            expr *= f.as_expr() ** k
+        out.append(const * expr)
+    return tuple(out)
+
+
 @dataclass(frozen=True)
 class TerminalConstraint:
     """The kinematic constraint(s) among chosen terminals with a chosen ground, and CYL's
@@ -163,6 +214,7 @@ class TerminalConstraint:
     ground: object
     terminals: tuple
     rows: tuple = field(repr=False)  # RREF rows over the terminals (sympy expressions)
+    _domain_rows: tuple = field(default=None, repr=False, compare=False)  # the same, (domain, elements)
 
     @property
     def count(self) -> int:
@@ -177,7 +229,10 @@ class TerminalConstraint:
     def coefficients(self) -> tuple | None:
         """``(a_1, ..., a_n)`` of ``sum a_i w_i = 0`` (polynomials in the ratios), or None
         unless there is exactly one constraint."""
-        return _primitive(list(self.rows[0])) if self.count == 1 else None
+        if self.count != 1:
+            return None
+        dom, elems = self._domain_rows if self._domain_rows is not None else (None, None)
+        return _primitive(list(self.rows[0]), elems and elems[0], dom)
 
     @property
     def equation(self) -> sympy.Expr | None:
@@ -266,8 +321,8 @@ def terminal_constraint(mech: Mechanism, terminals, *, ground) -> TerminalConstr
     if ground in terms:
         raise InputError(f"link {ground} is the ground (speed 0); it cannot also be a terminal")
     rows, fld = _eliminate(mech, ground, terms)
-    rows = tuple(tuple(fld.to_sympy(v) for v in row) for row in rows)
-    return TerminalConstraint(mech, ground, terms, rows)
+    exprs = tuple(tuple(fld.to_sympy(v) for v in row) for row in rows)
+    return TerminalConstraint(mech, ground, terms, exprs, (fld.domain, tuple(tuple(r) for r in rows)))
 
 
 def proportional(first, second) -> bool:

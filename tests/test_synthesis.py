@@ -196,6 +196,35 @@ def test_redundant_links_do_not_change_the_terminal_relation(ground, terms):
         assert same_space == (x in c.redundant), x
 
 
+def _sympy_primitive(values):
+    """Coefficients cleared of denominators and common factors with sympy's own cancel, lcm,
+    gcd and factor (the route gearlib's polynomial-ring version must reproduce exactly)."""
+    values = [sympy.cancel(v) for v in values]
+    den = sympy.lcm_list([sympy.fraction(v)[1] for v in values])
+    nums = [sympy.cancel(v * den) for v in values]
+    common = sympy.gcd_list([n for n in nums if n != 0])
+    nums = [sympy.expand(sympy.cancel(n / common)) for n in nums]
+    lead = next(n for n in nums if n != 0)
+    if sympy.Poly(lead, *sorted(lead.free_symbols, key=str) or [sympy.Symbol("x")]).LC() < 0:
+        nums = [-n for n in nums]
+    return tuple(sympy.factor(n) for n in nums)
+
+
+@pytest.mark.parametrize("mech", [GKC7, GKC8, DIFF], ids=lambda m: m.name)
+def test_coefficients_are_the_ones_sympy_factor_prints(mech):
+    compared = 0
+    for ground in mech.link_ids:
+        rest = [x for x in mech.link_ids if x != ground]
+        for terms in itertools.islice(itertools.combinations(rest, 3), 0, None, 3):
+            c = synthesis.terminal_constraint(mech, terms, ground=ground)
+            if c.count != 1:
+                continue
+            expected = _sympy_primitive(list(c.rows[0]))
+            assert c.coefficients == expected and list(map(str, c.coefficients)) == list(map(str, expected))
+            compared += 1
+    assert compared >= 3
+
+
 def test_proportional():
     a, b = e("e_1_2"), e("e_2_3")
     assert synthesis.proportional([a, 1, -b], [2 * a, 2, -2 * b])
