@@ -238,11 +238,24 @@ def symbolic():
 
 # ----------------------------------------------------------------------------- widgets
 def _widget_row(name, ex, updates):
-    """Best time of a compute-and-redraw callback, cycling through *updates*."""
-    ex.update(**updates[0])
-    cycle = iter(range(10**6))
-    t = best(lambda: ex.update(**updates[next(cycle) % len(updates)]), repeat=10)
-    return Row(f"widget: {name}", t, None, "-", "under 50 ms", t < 0.05)
+    """Mean time of a compute-and-redraw callback over a sweep of *updates* (each state
+    once, as a reader moving the control would, after one warm-up frame). A frame whose
+    background had to be redrawn costs more than one that reuses it, so the mean, not the
+    best frame, is compared with the target; the slowest frame is printed too."""
+    ex.update(**updates[-1])
+    canvas = getattr(ex, "_canvas", None)
+    redrawn = canvas.backgrounds_drawn if canvas is not None else 0
+    times = []
+    for _ in range(2):
+        for u in updates:
+            t = time.perf_counter()
+            ex.update(**u)
+            times.append(time.perf_counter() - t)
+    mean = sum(times) / len(times)
+    redrawn = (canvas.backgrounds_drawn - redrawn) if canvas is not None else "?"
+    return Row(f"widget: {name}", mean, None, "-",
+               f"mean under 50 ms (slowest {max(times) * 1e3:.0f} ms; {redrawn} of {len(times)} frames redrew "
+               "the background)", mean < 0.05)
 
 
 @case

@@ -57,6 +57,11 @@ def spectral_lines(table, kinds=None, tol=1e-9) -> list[tuple[float, list]]:
     return [(float(g[0].frequency), g) for g in groups]
 
 
+def spectrum_key(lines) -> list[str]:
+    """One line per spectral line of :func:`spectral_lines`: number, frequency, contacts."""
+    return [f"{n:>2}  {f:.4g}  {group_label(rows)}" for n, (f, rows) in enumerate(lines, start=1)]
+
+
 def plot_spectrum(table, ax=None, *, log=None, kinds=None, key: bool = True, title=None, fontsize: float = 7):
     """The frequency table as a line spectrum.
 
@@ -67,6 +72,9 @@ def plot_spectrum(table, ax=None, *, log=None, kinds=None, key: bool = True, tit
     frequencies span more than a factor 30). Returns the axes.
     """
     import math
+
+    from matplotlib.collections import LineCollection
+    from matplotlib.transforms import offset_copy
 
     from .plot import _axes
 
@@ -92,21 +100,23 @@ def plot_spectrum(table, ax=None, *, log=None, kinds=None, key: bool = True, tit
         def where(f):
             return f / hi
 
-    legend_done = set()
+    by_name: dict = {}  # legend name -> (colour, [(f, h)]): one vlines per name, in order of first use
     last_x = [-1.0, -1.0, -1.0]
-    entries = []
     for n, (f, rows) in enumerate(lines, start=1):
         top = max(rows, key=lambda r: HEIGHT[r.kind])
         h = HEIGHT[top.kind]
-        name = LEGEND[top.kind]
-        ax.vlines(f, 0, h, color=COLORS[top.kind], linewidth=2, label=None if name in legend_done else name)
-        legend_done.add(name)
+        by_name.setdefault(LEGEND[top.kind], (COLORS[top.kind], []))[1].append((f, h))
         x = where(f)
         level = next((k for k in range(3) if x - last_x[k] > 0.025), 0)
         last_x[level] = x
-        ax.annotate(str(n), (f, h), xytext=(0, 2 + 8 * level), textcoords="offset points", ha="center",
-                    va="bottom", fontsize=fontsize)
-        entries.append(f"{n:>2}  {f:.4g}  {group_label(rows)}")
+        # a text shifted by points (what annotate does, for a third of the drawing time)
+        ax.text(f, h, str(n), transform=offset_copy(ax.transData, fig=ax.figure, y=2 + 8 * level, units="points"),
+                ha="center", va="bottom", fontsize=fontsize)
+    for name, (color, fh) in by_name.items():  # what ax.vlines makes, without its unit and limit handling
+        ax.add_collection(LineCollection([[(f, 0.0), (f, h)] for f, h in fh], colors=color, linewidths=2, label=name),
+                          autolim=False)
+    legend_done = list(by_name)
+    entries = spectrum_key(lines)
     ax.set_ylim(0, 1.75)
     ax.set_yticks([])
     ax.set_xlabel(f"frequency ({table.unit})")

@@ -20,6 +20,7 @@ is then the right (inner) wheel and link 4 the left one. Derived in chapter 4.
 
 from __future__ import annotations
 
+import html
 import math
 import numbers
 
@@ -27,6 +28,7 @@ import numpy as np
 
 from .adjacency import speed_ratio_matrix
 from .errors import DataFormatError, InputError
+from ._spectrum import spectral_lines, spectrum_key
 from .frequencies import FrequencyTable, frequency_table, plot_spectrum
 from .mechanism import Mechanism
 from .widgets import Explorer
@@ -95,7 +97,10 @@ class CorneringExplorer(Explorer):
 
     :meth:`update` computes and redraws without a browser (it is what the sliders call);
     display the object (or its :attr:`widget`) in JupyterLab. Static twin: :func:`plot_cornering`.
+    The key of the numbered spectral lines is in :attr:`text` (HTML), beside the picture.
     """
+
+    html_text = True
 
     def __init__(self, mech: Mechanism | None = None, *, left=4, right=3, ground=1, wheel_radius=WHEEL_RADIUS,
                  track=TRACK, convention="standard"):
@@ -142,14 +147,17 @@ class CorneringExplorer(Explorer):
         self.speeds, self.table = sol, table
         wl, wr = sol[self.left], sol[self.right]
         where = "straight ahead" if turn == "straight" else f"{turn} turn, radius {turn_radius:g} m"
-        self.text = f"{speed:g} km/h, {where}: left wheel {wl:.4g} rad/s, right wheel {wr:.4g} rad/s"
+        summary = f"{speed:g} km/h, {where}: left wheel {wl:.4g} rad/s, right wheel {wr:.4g} rad/s"
+        # the key of the numbered lines is text beside the picture (HTML), not drawn into it
+        key = "\n".join(spectrum_key(spectral_lines(table)))
+        self.text = f"{html.escape(summary)}<pre style='font-size: 11px; line-height: 1.2'>{html.escape(key)}</pre>"
         if self._canvas is None:
             from .widgets import Canvas
 
-            self._canvas = Canvas((10.0, 3.6), dpi=72, margins=(0.11, 0.66, 0.15, 0.9), panels=2,
-                                  width_ratios=[1, 1.5], wspace=0.25, keep_axes=True)
+            self._canvas = Canvas((7.6, 3.6), dpi=72, margins=(0.145, 0.98, 0.15, 0.9), panels=2,
+                                  width_ratios=[1, 1.5], wspace=0.25, keep_axes=True, stable_limits=True)
         self.image = self._canvas.png(lambda ax: _plot_link_speeds(sol, ax, "speeds, frame fixed"),
-                                      lambda ax: plot_spectrum(table, ax=ax, title="contact frequencies"))
+                                      lambda ax: plot_spectrum(table, ax=ax, key=False, title="contact frequencies"))
         self._show()
         return self.image
 

@@ -140,9 +140,10 @@ class DGMExplorer:
         else:
             self.constraint, self.text = None, "choose terminals"
         if self._canvas is None:
-            self._canvas = Canvas(figsize=(5.0, 4.2), margins=(0.02, 0.98, 0.12, 0.92))
+            self._canvas = Canvas(figsize=(5.0, 4.2), margins=(0.02, 0.98, 0.06, 0.86), keep_axes=True)
         if self.constraint is not None:
-            self.image = self._canvas.png(lambda ax: plot_dgm(self.constraint, ax, equation=False))
+            title = f"{mech.name}\nground {self.state['ground']}, terminals {', '.join(map(str, terms))}"
+            self.image = self._canvas.png(lambda ax: plot_dgm(self.constraint, ax, equation=False, title=title))
         if self._widget is not None:
             self._sync()
         return self.image

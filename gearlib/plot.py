@@ -12,6 +12,7 @@ square, input links as black squares, other links as circles.
 from __future__ import annotations
 
 import contextlib
+import functools
 import math
 
 import numpy as np
@@ -53,21 +54,24 @@ def graph_layout(mech: Mechanism) -> dict:
     deterministic Kamada-Kawai layout of its graph."""
     if mech.layout:
         return dict(mech.layout)
+    edges = tuple(tp.links for tp in mech.turning_pairs) + tuple(gp.gears for gp in mech.gear_pairs)
+    return dict(_kamada_kawai(tuple(mech.link_ids), edges))
+
+
+@functools.lru_cache(maxsize=64)
+def _kamada_kawai(nodes: tuple, edges: tuple) -> tuple:
+    """The layout of one graph (deterministic, so a widget redrawing a chain reuses it)."""
     import networkx as nx
 
     g = nx.Graph()
-    g.add_nodes_from(mech.link_ids)
-    for tp in mech.turning_pairs:
-        g.add_edge(*tp.links)
-    for gp in mech.gear_pairs:
-        g.add_edge(*gp.gears)
+    g.add_nodes_from(nodes)
+    g.add_edges_from(edges)
     if len(g) <= 2:
-        return {n: (float(i), 0.0) for i, n in enumerate(mech.link_ids)}
+        return tuple((n, (float(i), 0.0)) for i, n in enumerate(nodes))
     # start from a circle so the result does not depend on any random state
-    start = {n: (math.cos(2 * math.pi * i / len(g)), math.sin(2 * math.pi * i / len(g)))
-             for i, n in enumerate(mech.link_ids)}
+    start = {n: (math.cos(2 * math.pi * i / len(g)), math.sin(2 * math.pi * i / len(g))) for i, n in enumerate(nodes)}
     pos = nx.kamada_kawai_layout(g, pos=start)
-    return {n: (float(x), float(y)) for n, (x, y) in pos.items()}
+    return tuple((n, (float(x), float(y))) for n, (x, y) in pos.items())
 
 
 def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, highlight=(),
@@ -103,7 +107,7 @@ def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, 
             pos[u], pos[v], arrowstyle="-", connectionstyle=f"arc3,rad={rad}",
             linewidth=4.0 if heavy else 1.2, color=color, zorder=1, shrinkA=0, shrinkB=0,
         )
-        ax.add_patch(patch)
+        ax.add_artist(patch)  # not add_patch: the limits are set below, so no curve extents are needed
         if not heavy:
             (x0, y0), (x1, y1) = pos[u], pos[v]
             mx, my = (x0 + x1) / 2, (y0 + y1) / 2
@@ -112,6 +116,7 @@ def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, 
             off = 0.06 + rad * 0.5
             ax.text(mx - dy / norm * off, my + dx / norm * off, data["axis"], fontsize=font_size - 1,
                     ha="center", va="center", style="italic", color=color, zorder=3)
+    nodes: dict = {}  # marker -> (positions, faces, edges): one scatter per marker
     for link in mech.link_ids:
         x, y = pos[link]
         marker, face = "o", "white"
@@ -119,10 +124,14 @@ def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, 
             marker, face = "s", "0.75"
         elif link in inputs:
             marker, face = "s", "black"
-        edge = highlight_color if link in hl else "black"
-        ax.scatter([x], [y], s=node_size, marker=marker, facecolor=face, edgecolor=edge, linewidth=1.5, zorder=2)
+        group = nodes.setdefault(marker, ([], [], []))
+        group[0].append((x, y))
+        group[1].append(face)
+        group[2].append(highlight_color if link in hl else "black")
         ax.text(x, y, str(link), ha="center", va="center", fontsize=font_size,
                 color="white" if face == "black" else "black", zorder=4)
+    for marker, (xy, faces, edges) in nodes.items():
+        ax.scatter(*zip(*xy), s=node_size, marker=marker, facecolor=faces, edgecolor=edges, linewidth=1.5, zorder=2)
     xs = [p[0] for p in pos.values()]
     ys = [p[1] for p in pos.values()]
     pad = 0.15 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)

@@ -181,7 +181,6 @@ def _primitive_ring(elems: list, dom) -> tuple | None:
     if not common:
         return None
     nums = [n.exquo(common) for n in nums]
-    lead = next(n for n in nums if n)
     order = sorted(range(ring.ngens), key=lambda i: str(ring.symbols[i]))
 
     def negative(p):  # the leading coefficient in sympy's order (lex, symbols by name) is < 0

@@ -284,7 +284,8 @@ def test_spectrum_plot_draws_one_line_per_distinct_frequency(cornering):
     ax = Figure().add_subplot()
     assert gl.plot_spectrum(cornering, ax=ax) is ax
     distinct = {round(float(f), 9) for f in cornering.frequencies() if f > 0}
-    assert len(ax.collections) == len(distinct)
+    assert sum(len(c.get_segments()) for c in ax.collections) == len(distinct)
+    assert len(ax.collections) == len({c.get_label() for c in ax.collections})  # one collection per kind
     assert ax.get_xscale() == "log"  # 2 to 1820 rad/s
 
 

@@ -104,3 +104,60 @@ def test_moving_the_first_control_redraws_the_view(index):
     else:
         control.value = control.max if control.value != control.max else control.min
     assert image.value[:4] == PNG and image.value != before
+
+
+def _pixels(png):
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGBA"))
+
+
+def test_encode_png_is_read_back_by_pillow():
+    import numpy as np
+
+    from gearlib.widgets import encode_png
+
+    rgba = np.random.default_rng(5).integers(0, 256, size=(37, 53, 4), dtype=np.uint8)
+    assert (_pixels(encode_png(rgba)) == rgba).all()
+
+
+def _sweeps():
+    """Each widget with a sequence of states that moves limits, titles, tick labels and legends."""
+    k = "N_1_in_1_2"
+    laus = gl.catalog.load("laus_epicyclic")
+    gears = gl.unit_widgets.transmission_explorer(gl.catalog.load("liu_chen_transmission"),
+                                                  gl.transmission.LIU_CHEN_MODES)
+    return {
+        "speed": (gl.widgets.speed_explorer(gl.catalog.simple_planetary(), ground=3, inputs={1: 1}),
+                  [{k: t} for t in (20, 21, 60, 22, 120, 5, 30)]),
+        "unit": (gl.unit_explorer(), [{"name": n} for n in ("liu_chen_transmission", "car_differential", "simpson")]),
+        "transmission": (gears, [{"mode": m} for m in list(gears.modes)[:4]]),
+        "cornering": (gl.cornering_explorer(), [{"speed": v, "turn": t} for v, t in
+                                                ((30, "right"), (31, "right"), (90, "left"), (5, "straight"),
+                                                 (6, "straight"), (130, "right"))]),
+        "dgm": (gl.dgm_explorer([gl.catalog.load("cyl_gkc_8")]),
+                [{"ground": 0, "terminals": t} for t in ((1, 2, 3), (1, 2, 4), (2, 3, 5))] + [{"ground": 2}]),
+        "efficiency": (efficiency_explorer(laus, 1, 5, 2), [{"eta_1_3": e} for e in (0.95, 0.96, 0.9, 0.999)]
+                       + [{"N_1_in_1_3": 40}, {"N_1_in_1_3": 80}]),
+    }
+
+
+@pytest.mark.parametrize("name", ["speed", "unit", "transmission", "cornering", "dgm", "efficiency"])
+def test_kept_background_gives_the_pixels_of_a_full_redraw(name):
+    """A frame drawn on the kept background must equal the same figure drawn from scratch:
+    if the background key missed a change (limits, ticks, legend), the pixels would differ."""
+    ex, states = _sweeps()[name]
+    kept = 0
+    for state in states:
+        frame = ex.update(**state)
+        canvas = ex._canvas
+        before = canvas.backgrounds_drawn
+        canvas._key = None  # forget the background: the next render draws everything
+        full = canvas._render()
+        assert canvas.backgrounds_drawn == before + 1
+        assert (_pixels(frame) == _pixels(full)).all(), state
+        kept += 1
+    assert kept == len(states)

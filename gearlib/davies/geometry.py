@@ -33,6 +33,8 @@ falls back, saying so in ``Layout.notes``.
 
 from __future__ import annotations
 
+import functools
+
 import math
 from dataclasses import dataclass, field, replace
 
@@ -94,8 +96,15 @@ def _exact(value):
     if isinstance(value, sympy.Basic):
         return value
     if isinstance(value, float):
-        return sympy.nsimplify(value, rational=True)
+        return _rational(value)
     return sympy.sympify(value)
+
+
+@functools.lru_cache(maxsize=1024)
+def _rational(value: float):
+    """The decimal a float was typed as (``0.1`` -> ``1/10``); cached, since ``nsimplify`` is
+    slow and a widget meets the same radii on every frame."""
+    return sympy.nsimplify(value, rational=True)
 
 
 def _num(x) -> float:

@@ -83,7 +83,7 @@ class EfficiencyExplorer(Explorer):
             if self._canvas is None:
                 from ..widgets import Canvas
 
-                self._canvas = Canvas(margins=(0.1, 0.98, 0.12, 0.88))
+                self._canvas = Canvas(margins=(0.1, 0.98, 0.12, 0.88), keep_axes=True, stable_limits=True)
             self.image = self._canvas.png(lambda ax: plot_power_flow(self.result, ax=ax))
         except ValueError as err:  # a GearlibError: say it, keep the last picture
             self.text = f"cannot compute: {err}"
