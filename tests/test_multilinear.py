@@ -63,3 +63,36 @@ def test_symbolic_ratios_keep_their_factored_form():
     m = gl.catalog.load("liu_chen_transmission")
     r = gl.unit_ratio(m, output=8, input=4, ground=1, method="symbolic")
     assert str(r) == "(e_1_7*e_7_8 - 1)*(e_2_3*e_3_5 - 1)/(e_1_6*e_2_3*e_3_5*e_6_2 - e_2_3*e_3_5 + 1)"
+
+
+def test_davies_factoring_matches_sympy_factor_list():
+    """gearlib.davies._rational factors numerators and denominators of rational functions
+    with rational coefficients (Davies' formulas in friction coefficients, radii, ordinary
+    efficiencies) in the polynomial ring; the constants and factors (with their signs) must
+    be sympy's (their order may differ where sympy splits a product before factoring)."""
+    import sympy
+
+    from gearlib.davies._rational import _ring_factors, factored
+
+    rng = random.Random(17)
+    symbols = sympy.symbols("zeta_C zeta_D r1 r2 eta_1_2 eta_4_2")
+    compared = 0
+    for _ in range(60):
+        parts = []
+        for _ in range(2):
+            p = random_multilinear(rng, rng.sample(X[:6], rng.randint(1, 4)))
+            expr = p.as_expr().subs(dict(zip(sympy.symbols("a b c d e f"), symbols)), simultaneous=True)
+            parts.append(expr * sympy.Rational(rng.choice([1, 2, 3]), rng.choice([1, 5, 7])))
+        expr = parts[0] / parts[1] if rng.random() < 0.8 else parts[0] * parts[1] ** 2
+        if not expr.free_symbols:
+            assert _ring_factors(expr) is None  # constants are factored() before this route
+            continue
+        got = _ring_factors(expr)
+        assert got is not None
+        num, den = expr.as_numer_denom()
+        for (const, facs), part in zip(got, (num, den)):
+            want_const, want = sympy.factor_list(sympy.expand(part))
+            assert const == want_const and sorted(facs, key=str) == sorted(want, key=str), part
+        assert sympy.cancel(factored(expr) - expr) == 0
+        compared += 1
+    assert compared >= 50

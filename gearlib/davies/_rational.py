@@ -19,14 +19,52 @@ def _factors(poly_expr):
     return const, facs
 
 
+def _ring_factors(expr):
+    """``((cn, fn), (cd, fd))`` as :func:`sympy.factor_list` gives them for the numerator and
+    the denominator of *expr*, computed in the integer polynomial ring of its symbols (in
+    the order sympy gives them) with :func:`gearlib._multilinear.factor_list`; None when
+    *expr* is not a rational function with rational coefficients."""
+    from sympy.polys.polytools import _sorted_factors
+    from sympy.polys.polyutils import _sort_gens
+    from sympy.polys.rings import ring
+
+    from .._multilinear import factor_list
+
+    symbols = _sort_gens(list(expr.free_symbols))  # sympy's own order: it fixes the signs of the factors
+    if not symbols or any(not s.is_Symbol for s in symbols):
+        return None
+    R = ring(symbols, sympy.QQ)[0]
+    try:
+        num, den = (R.from_expr(part) for part in expr.as_numer_denom())
+    except (ValueError, TypeError, sympy.polys.polyerrors.PolynomialError, sympy.polys.polyerrors.CoercionFailed):
+        return None
+    if not den:
+        return None
+    Z = ring(symbols, sympy.ZZ)[0]
+    out = []
+    for p in (num, den):
+        c, p = p.clear_denoms()  # p * c has integer coefficients
+        const, facs = factor_list(p.set_ring(Z))
+        # sympy's order of the factors (it decides which sum absorbs the constant when printed)
+        used = [x for i, x in enumerate(symbols) if any(m[i] for m in p.itermonoms())] or symbols[:1]
+        polys = [(sympy.Poly(f.as_expr(), *used, domain=sympy.ZZ), k) for f, k in facs]
+        out.append((sympy.Rational(int(const)) / sympy.Rational(c),
+                    [(f.as_expr(), k) for f, k in _sorted_factors(polys, "factor")]))
+    return out
+
+
 def factored(expr) -> sympy.Expr:
     """*expr* as a product of irreducible factors with common factors cancelled."""
     expr = sympy.sympify(expr)
     if not expr.free_symbols:
         return sympy.nsimplify(expr, rational=True) if expr.is_Float else sympy.simplify(expr) if expr.has(sympy.sqrt) else expr
-    num, den = sympy.fraction(sympy.together(expr))
-    cn, fn = _factors(num)
-    cd, fd = _factors(den)
+    fast = _ring_factors(expr)
+    if fast is not None:
+        (cn, fn), (cd, fd) = fast
+    else:
+        num, den = sympy.fraction(sympy.together(expr))
+        cn, fn = _factors(num)
+        cd, fd = _factors(den)
     counts: Counter = Counter()
     for f, k in fn:
         counts[f] += k
