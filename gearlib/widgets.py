@@ -51,7 +51,7 @@ class Canvas:
     ``keep_axes=True`` removes only the drawn artists between frames instead of clearing
     the axes (tick objects survive: cheaper when the draw function does not restyle the
     axes). ``stable_limits=True`` keeps the previous frame's axis limits while the new data
-    fit in them and fill at least half of them; data that outgrow them extend them, with a
+    fit in them and fill at least half of them; data that outgrow them extend them, with
     half the span to spare; data that fill less than half start afresh. The axes stay
     still while a slider moves (which also shows the change better) and the background need
     not be redrawn.
