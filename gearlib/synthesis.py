@@ -166,6 +166,8 @@ def _primitive_ring(elems: list, dom) -> tuple | None:
     """:func:`_primitive` over ``ZZ[e_a_b]``: lcm of the denominators, gcd of the numerators,
     the sign of sympy's leading coefficient (lex order of the symbol names), each coefficient
     factored as :func:`sympy.factor` prints it. None when *dom* is not ``ZZ(...)``."""
+    from sympy.polys.polyutils import _sort_gens
+
     from ._multilinear import factor_list
 
     if not (getattr(dom, "is_FractionField", False) and dom.domain.is_ZZ):
@@ -181,12 +183,14 @@ def _primitive_ring(elems: list, dom) -> tuple | None:
     if not common:
         return None
     nums = [n.exquo(common) for n in nums]
-    order = sorted(range(ring.ngens), key=lambda i: str(ring.symbols[i]))
-
-    def negative(p):  # the leading coefficient in sympy's order (lex, symbols by name) is < 0
+    def negative(p, order):  # the leading coefficient (lex, generators in this order) is < 0
         return p[max(p.itermonoms(), key=lambda m: tuple(m[i] for i in order))] < 0
 
-    if negative(next(n for n in nums if n)):
+    # the first coefficient is made positive with the symbols sorted by name (as _primitive
+    # does); each factor gets the sign sympy.factor gives it, in sympy's generator order
+    by_name = sorted(range(ring.ngens), key=lambda i: str(ring.symbols[i]))
+    sympy_order = [ring.symbols.index(x) for x in _sort_gens(list(ring.symbols))]
+    if negative(next(n for n in nums if n), by_name):
         nums = [-n for n in nums]
     out = []
     for n in nums:
@@ -197,7 +201,7 @@ def _primitive_ring(elems: list, dom) -> tuple | None:
         const = int(const)
         expr = sympy.Integer(1)
         for f, k in factors:
-            if negative(f):
+            if negative(f, sympy_order):
                 f, const = -f, const * (-1) ** k
             expr *= f.as_expr() ** k
         out.append(const * expr)
