@@ -42,6 +42,7 @@ $(STAMP): environment.txt pyproject.toml
 	@test -d $(VENV) || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip 2>&1 | grep -v "is ignored" || true
 	$(BIN)/python -m pip install --quiet -r environment.txt 2>&1 | grep -v "is ignored" || true
+	$(BIN)/python .ci/sync_venv.py environment.txt
 	$(BIN)/python -c "import gearlib, jupyter_book, nbval, sympy, matplotlib"
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 --display-name "Python 3 (gearlib)" >/dev/null
 	@touch $(STAMP)
