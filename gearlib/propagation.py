@@ -32,6 +32,7 @@ from __future__ import annotations
 from collections import defaultdict, deque
 from dataclasses import dataclass, field
 
+from ._nogc import no_gc
 from .errors import ConstraintError, InputError
 from .mechanism import Mechanism
 from .units import KinematicUnit, kinematic_units
@@ -192,6 +193,7 @@ def parse_relative(mech: Mechanism, x, ref):
     return mech.resolve(x, "link"), ref
 
 
+@no_gc
 def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joined=()) -> Plan:
     """The propagation plan (see the module documentation).
 

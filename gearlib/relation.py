@@ -23,6 +23,7 @@ from functools import cached_property
 import sympy
 
 from ._evaluate import Evaluator, RatioRing, solve_tears
+from ._nogc import no_gc
 from ._parse import to_fraction
 from .errors import InputError
 from .mechanism import Mechanism
@@ -56,6 +57,7 @@ class Propagation:
     def _exact(self):
         return self._run("exact")
 
+    @no_gc
     def _run(self, method):
         p = self.plan
         field = _ratio_field(p.mechanism) if method == "symbolic" else None

@@ -37,6 +37,7 @@ from dataclasses import dataclass
 from functools import cached_property
 from itertools import combinations
 
+from ._nogc import no_gc
 from ._topology import UnionFind
 from .mechanism import GearPair, Mechanism
 
@@ -370,6 +371,7 @@ def _linkages(mech: Mechanism, units) -> tuple:
     return tuple(out)
 
 
+@no_gc
 def kinematic_units(mech: Mechanism) -> Fractionation:
     """Fractionate *mech* into kinematic units (steps 1-4), classify each against the catalogue
     of units with up to five links, and find the common linkages between them.

@@ -54,3 +54,23 @@ def test_scaling_checks_its_arguments_and_plots():
     assert curve.sizes == (5, 10) and all(t > 0 for t in curve.seconds)
     ax = gl.scaling.plot_scaling(curve)
     assert ax.get_xscale() == "log" and "propagation" in ax.get_legend().get_texts()[0].get_text()
+
+
+def test_propagation_leaves_the_garbage_collector_as_it_found_it():
+    """plan() and the evaluation pause the cyclic collector (gearlib._nogc); the state comes
+    back as it was, also when the call raises, and a collector the caller disabled stays off."""
+    import gc
+
+    m = gl.serial_train(4)
+    assert gc.isenabled()
+    assert gl.unit_ratio(m, output=5, input=1, ground=0) == Fraction(1, 16)
+    assert gc.isenabled()
+    with pytest.raises(gl.errors.GearlibError):
+        gl.unit_ratio(m, output=99, input=1, ground=0)
+    assert gc.isenabled()
+    gc.disable()
+    try:
+        gl.unit_ratio(gl.serial_train(3), output=4, input=1, ground=0)
+        assert not gc.isenabled()
+    finally:
+        gc.enable()
