@@ -33,6 +33,7 @@ Fraction(2, 7)
 
 from __future__ import annotations
 
+import cmath
 import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -90,6 +91,11 @@ class Constraints:
         seen = set()
         for key, value in items:
             u, v = cls._input_key(mech, key, ground)
+            if u != v and u not in held and (u, v) not in seen and (v, u) not in seen and value is not None \
+                    and type(value) in (int, float) and value == value and -_INF < value < _INF:
+                seen.add((u, v))  # the common case, valid: skip the checks below
+                out.append((u, v, value))
+                continue
             where = f"input {u}" if v == ground else f"input {u}/{v}"
             if u == ground and v == ground:
                 raise InputError(f"{where}: link {u} is the ground; its speed is 0. Give inputs to other links")
@@ -158,6 +164,9 @@ class Constraints:
 
     def describe_input(self, u, v) -> str:
         return f"{u}" if v == self.ground else f"{u}/{v}"
+
+
+_INF = float("inf")
 
 
 def _finite(x) -> bool:
@@ -478,24 +487,70 @@ def _numeric(mech, cons):
     system is not square (redundant gear pairs) or singular, the null-space method decides
     the degrees of freedom and explains what is wrong with the inputs.
     """
-    key = (cons.ground, cons.held, cons.joined, tuple((u, v) for u, v, _ in cons.inputs))
+    key = (cons.ground, cons.held, cons.joined, tuple([(u, v) for u, v, _ in cons.inputs]))
     cache = mech.__dict__.setdefault("_speed_plans", {})
-    plan = cache.get(key)
-    if plan is None:
+    entry = cache.get(key)
+    if entry is None:
         plan = _numeric_plan(mech, cons)
+        # one real input on a small mechanism: keep the column as a Python list too, so a
+        # call is a list times a number (numpy's per-call overhead dominates at this size)
+        small = plan[:, 0].tolist() if plan.dtype == float and plan.shape[1] == 1 and plan.shape[0] <= 64 else None
         if len(cache) >= _PLAN_CACHE_SIZE:
             cache.pop(next(iter(cache)))
-        cache[key] = plan
+        entry = cache[key] = (plan, small)
+    plan, small = entry
     values = [v if type(v) in (int, float) else _to_complex(v) for _, _, v in cons.inputs]
+    if small is not None and type(values[0]) is not complex:
+        v = values[0]
+        return _clean_small([x * v for x in small]), 1
     if plan.dtype != complex and any(type(v) is complex and v.imag for v in values):
         values = np.array(values, dtype=complex)
     return _clean(plan @ np.asarray(values)), len(cons.inputs)
 
 
+def _dense_small(mech, cons):
+    """The square dense matrix of :func:`_coo`'s system for a small mechanism, filled entry
+    by entry (a handful of numpy calls instead of a dozen: most of a first call's time at
+    this size), or None when the system is not square."""
+    m = len(mech.links)
+    cons_rows = list(cons.rows())
+    n = len(mech.gear_pairs)
+    if n + len(cons_rows) != m:
+        return None
+    ratios = [gp.e_value for gp in mech.gear_pairs]
+    is_complex = any(r.imag != 0 for r in ratios) or any(_to_complex(v).imag != 0 for _, _, v in cons.inputs)
+    A = [[0.0] * m for _ in range(m)]  # Python lists: an entry costs far less than in an array
+    ix = mech.index
+    for row, gp, e in zip(A, mech.gear_pairs, ratios):
+        e = e if is_complex else e.real
+        a, b = gp.gears
+        row[ix[b]] += 1
+        row[ix[a]] -= e
+        row[ix[gp.carrier]] += e - 1
+    for row, (entries, _, _) in zip(A[n:], cons_rows):
+        for c, v in entries.items():
+            row[c] += v
+    return np.array(A, dtype=complex if is_complex else float)
+
+
 def _numeric_plan(mech, cons) -> np.ndarray:
-    rows, cols, data, shape, _, dtype = _coo(mech, cons)
-    m = shape[1]
+    m = len(mech.links)
     k = len(cons.inputs)
+    A = _dense_small(mech, cons) if m <= 64 and k else None
+    if A is not None:
+        rhs = np.zeros((m, k), dtype=A.dtype)
+        rhs[m - k + np.arange(k), np.arange(k)] = 1  # input rows come last
+        try:
+            omega0 = np.linalg.solve(A, rhs)
+        except np.linalg.LinAlgError:
+            return _nullspace_plan(mech, cons)
+        # the same acceptance test as below, on Python floats (cheaper at this size)
+        flat = omega0.ravel().tolist()
+        residual = max(map(abs, (A @ omega0 - rhs).ravel().tolist()))
+        if cmath.isfinite(sum(flat)) and residual <= 1e-9 * max(1.0, max(map(abs, flat))):
+            return omega0
+        return _nullspace_plan(mech, cons)
+    rows, cols, data, shape, _, dtype = _coo(mech, cons)
     if shape[0] == m and k:
         rhs = np.zeros((m, k), dtype=dtype)
         rhs[m - k + np.arange(k), np.arange(k)] = 1  # input rows come last
@@ -567,6 +622,57 @@ def _nullspace(mech, cons):
     return _clean(omega0 @ values), len(cons.inputs)
 
 
+def _remember_numeric(mech, ground, inputs, cons):
+    """After a validated numeric solve with ``{link: number}`` inputs, remember what it took,
+    so that the next call with the same ground and input links (a widget moving a slider)
+    skips the validation: :func:`_repeat_numeric`."""
+    if len(inputs) != 1 or len(cons.inputs) != 1:
+        return
+    key = _repeat_key(ground, inputs)
+    entry = mech.__dict__.setdefault("_speed_plans", {}).get(
+        (cons.ground, cons.held, cons.joined, tuple([(u, v) for u, v, _ in cons.inputs])))
+    if entry is None or entry[1] is None:
+        return
+    fast = mech.__dict__.setdefault("_speed_repeat", {})
+    if len(fast) >= _PLAN_CACHE_SIZE:
+        fast.pop(next(iter(fast)))
+    column = entry[1]
+    fast[key] = (cons.ground, tuple([(u, v) for u, v, _ in cons.inputs]), column, max(map(abs, column), default=0.0))
+
+
+def _repeat_key(ground, inputs):
+    # the types too: 1.0 and True equal 1 as dict keys, but are not valid link ids
+    k = next(iter(inputs))
+    return type(ground), ground, type(k), k
+
+
+def _repeat_numeric(mech, ground, inputs):
+    """The solution of :func:`speeds` for one real input on a small mechanism already solved
+    with the same ground and input link (see :func:`_remember_numeric`), or None."""
+    fast = mech.__dict__.get("_speed_repeat")
+    if not fast:
+        return None
+    if len(inputs) != 1:
+        return None
+    entry = fast.get(_repeat_key(ground, inputs))
+    if entry is None:
+        return None
+    v = next(iter(inputs.values()))
+    if type(v) not in (int, float) or not -_INF < v < _INF:
+        return None  # NaN, infinities, other types: the full path gives the error message
+    g, pairs, column, largest = entry
+    (u, w), = pairs
+    lim = 1e-12 * max(1.0, abs(v) * largest)  # _clean's rule, in one pass
+    values = tuple([0.0 if -lim < (y := x * v) < lim else y for x in column])
+    return Solution(mech, Constraints(mech, g, (), (), ((u, w, v),)), values, "numeric", 1)
+
+
+def _clean_small(xs: list) -> list:
+    """:func:`_clean` for a short list of real floats."""
+    scale = 1e-12 * max(1.0, max(map(abs, xs), default=0.0))
+    return [0.0 if -scale < x < scale else x for x in xs]
+
+
 def _clean(x) -> list:
     """Floating-point speeds as Python numbers: round-off below 1e-12 of the largest speed
     becomes 0, and complex values with no imaginary part become floats."""
@@ -625,10 +731,16 @@ def speeds(mech: Mechanism, ground=None, inputs=None, *, method: str = "exact", 
     ...
     gearlib.errors.InputError: 'car differential' has 2 degrees of freedom with link 1 grounded, so it needs 2 inputs; got 1 (3)
     """
+    if method == "numeric" and type(inputs) is dict and not held and not joined:
+        sol = _repeat_numeric(mech, ground, inputs)
+        if sol is not None:
+            return sol
     if method not in _SOLVERS:
         raise DataFormatError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
     cons = Constraints.build(mech, ground, inputs, held, joined, symbolic_inputs=(method == "symbolic"))
     values, dof = _SOLVERS[method](mech, cons)
+    if method == "numeric" and type(inputs) is dict and not held and not joined:
+        _remember_numeric(mech, ground, inputs, cons)
     if method == "exact" and values and isinstance(values[0], sympy.Basic):
         values = [v if to_fraction(v) is None else to_fraction(v) for v in values]
     return Solution(mech, cons, tuple(values), method, dof)

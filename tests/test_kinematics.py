@@ -214,3 +214,24 @@ def test_brakes_and_clutches_make_the_gears_of_a_simpson_set():
     direct = gl.ratio(s, output=3, input=2, ground=0, joined=[(1, 2)])  # sun locked to ring: 1:1
     assert direct == 1
 
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_repeated_numeric_calls_equal_a_first_call(seed):
+    """A second numeric solve with the same ground and input link skips validation
+    (kinematics._repeat_numeric); it must give exactly what a first call on a fresh copy of
+    the mechanism gives, for any input value, and still refuse bad values with the message
+    of the full path."""
+    m = gl.random_mechanism(12, dof=1, rng=seed)
+    gl.speeds(m, ground=0, inputs={1: 1}, method="numeric")
+    for v in (2, -3.5, 0, 1e-9, 7e8, 1e-300):
+        again = gl.speeds(m, ground=0, inputs={1: v}, method="numeric")
+        fresh = gl.speeds(gl.random_mechanism(12, dof=1, rng=seed), ground=0, inputs={1: v}, method="numeric")
+        assert again.values == fresh.values
+        assert again.constraints == fresh.constraints and again.dof == fresh.dof == 1
+        exact = gl.speeds(m, ground=0, inputs={1: v})
+        assert again.values == pytest.approx([float(x) for x in exact.values], rel=1e-9, abs=1e-12 * max(1, abs(v)))
+    for bad in (float("nan"), float("inf"), "fast"):
+        with pytest.raises(gl.errors.GearlibError, match="input 1"):
+            gl.speeds(m, ground=0, inputs={1: bad}, method="numeric")
+
