@@ -79,9 +79,11 @@ notebooks: $(STAMP)
 
 # Warnings are errors (-W, -n: every reference must resolve); then the built files are
 # checked: every local link and anchor resolves, nothing loads from another host.
+# book/build.py is `jupyter-book build` with Sphinx reading (so executing) pages in
+# parallel, one worker per CPU (JB_JOBS=1 for a serial build).
 build-book: $(STAMP) $(VENDOR_STAMP)
 	rm -rf book/_build
-	$(BIN)/jupyter-book build . $(JB_FLAGS)
+	$(BIN)/python book/build.py . $(JB_FLAGS)
 	@test -f book/_build/html/index.html
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py
 	@echo "The book is in book/_build/html/index.html"
