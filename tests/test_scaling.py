@@ -74,3 +74,21 @@ def test_propagation_leaves_the_garbage_collector_as_it_found_it():
         assert not gc.isenabled()
     finally:
         gc.enable()
+
+
+def test_uncached_copies_keep_nothing_an_earlier_run_computed():
+    """The scaling curves time propagation on copies of one train (gearlib.scaling._uncached):
+    a copy must carry none of the caches a run leaves behind, and give the same ratio."""
+    import dataclasses
+
+    from gearlib.scaling import _uncached
+
+    train = gl.serial_train(6)
+    fresh_keys = set(train.__dict__)
+    assert gl.unit_ratio(train, output=7, input=1, ground=0) == Fraction(1, 64)
+    assert set(train.__dict__) > fresh_keys  # the run cached something on the mechanism
+    copy = _uncached(train)
+    assert set(copy.__dict__) == fresh_keys and copy == train
+    for gp in copy.gear_pairs:
+        assert set(gp.__dict__) == {f.name for f in dataclasses.fields(gp)}
+    assert gl.unit_ratio(copy, output=7, input=1, ground=0) == Fraction(1, 64)
