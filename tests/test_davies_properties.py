@@ -112,3 +112,74 @@ def test_ravigneaux_without_a_planar_layout_agrees_with_the_torque_balance():
     assert any("do not close" in n for n in res.notes)
     conv = dv.torque_balance_efficiency(rav, 0, 1, 4, eta=0.98, held=[2])
     assert res.value == pytest.approx(conv.value, abs=1e-12)
+
+
+def _general_route():
+    """Patches that turn off the two shortcuts of the symbolic efficiency: the Woodbury solve
+    of a system with a few symbolic entries (davies._solve._few_symbols) and the formula in
+    polynomial rings (davies._ringformula.formula); both then return None and the caller
+    takes the general route (full fraction-free elimination, sympy expressions)."""
+    from unittest import mock
+
+    from gearlib.davies import _ringformula, _solve
+
+    return (mock.patch.object(_solve, "_few_symbols", lambda *a, **k: None),
+            mock.patch.object(_ringformula, "formula", lambda *a, **k: None))
+
+
+def _efficiency_both_ways(m, g, i, o, **kw):
+    fast = dv.efficiency(m, g, i, o, **kw)
+    a, b = _general_route()
+    with a, b:
+        slow = dv.efficiency(m, g, i, o, **kw)
+    return fast, slow
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(cases)
+def test_shortcuts_of_the_symbolic_formula_change_nothing(params):
+    """The same formula, printed the same, and the same mesh coefficients, with or without
+    the shortcuts (the general route is the reference)."""
+    case, _, _ = make(params)
+    m, g, i, o = case.mechanism, case.ground, case.input, case.output
+    fast, slow = _efficiency_both_ways(m, g, i, o, symbolic=True)
+    assert str(fast.value) == str(slow.value)
+    assert sympy.cancel(fast.formula_zeta - slow.formula_zeta) == 0
+    for a, b in zip(fast.meshes, slow.meshes):
+        assert (a.driver, a.driven) == (b.driver, b.driven)
+        assert sympy.simplify(a.zeta - b.zeta) == 0
+    point = {s: sympy.Rational(1, 3 + k) for k, s in enumerate(sorted(fast.zeta_symbols.values(), key=str))}
+    assert [sympy.nsimplify(x.subs(point)) for x in fast.actions.values] == [
+        sympy.nsimplify(y.subs(point)) for y in slow.actions.values]
+
+
+def test_shortcuts_on_the_book_examples():
+    for name, ports in (("laus_epicyclic", (1, 5, 2)), ("laus_simple_pair", (0, 1, 2))):
+        fast, slow = _efficiency_both_ways(gl.catalog.load(name), *ports, symbolic=True)
+        assert str(fast.value) == str(slow.value)
+    fast, slow = _efficiency_both_ways(gl.catalog.humpage(), 5, 1, 4, symbolic=True)
+    assert str(fast.value) == str(slow.value) == "-17*(19*eta_1_2*eta_2_5 + 5)/(24*(228*eta_2_5*eta_4_2 - 245))"
+
+
+def test_woodbury_solve_agrees_with_elimination():
+    """davies._solve: random square systems with a few ``c * symbol`` entries, solved by the
+    Woodbury shortcut and by sympy's LU solve of the same matrix."""
+    from gearlib.davies import _solve
+
+    rng = np.random.default_rng(5)
+    zs = sympy.symbols("z0:4")
+    for trial in range(6):
+        n = 6
+        A = sympy.Matrix(n, n, lambda r, c: int(rng.integers(-4, 5)) if rng.random() < 0.6 else 0) + 7 * sympy.eye(n)
+        for s in zs[: 1 + trial % 4]:
+            A[int(rng.integers(n)), int(rng.integers(n))] = sympy.Rational(int(rng.integers(1, 5)), 3) * s
+        b = sympy.Matrix([int(v) for v in rng.integers(-3, 4, n)])
+        sol = _solve._few_symbols(A, b)
+        assert sol is not None
+        for _ in range(2):  # exact comparison at random rational points: A(z) x = b solved by sympy
+            point = {s: sympy.Rational(int(rng.integers(-9, 10)), int(rng.integers(1, 7))) for s in zs}
+            ref = A.subs(point).LUsolve(b)
+            assert [sympy.nsimplify(sol[k].subs(point)) for k in range(n)] == list(ref)
+    # a singular A0 (here: a zero column outside the symbolic entry) is left to the general route
+    A = sympy.Matrix([[zs[0], 0], [1, 0]])
+    assert _solve._few_symbols(A, sympy.Matrix([1, 1])) is None

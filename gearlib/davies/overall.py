@@ -33,7 +33,7 @@ import sympy
 
 from .._parse import parse_expr
 from ..errors import ConstraintError, InputError
-from . import _rational
+from . import _rational, _ringformula
 from .motion import Motions, motions as solve_motions
 from .network import Network, network as make_network
 from .power import coupling_powers, mesh_flows, mesh_power_ratio
@@ -257,12 +257,17 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
     p_out = _port_power(mo, act, "output")
     formula = formula_zeta = None
     if exact:
-        formula_zeta = _rational.factored(-p_out / p_in)
         subs = {zsyms[c]: zetas[c] for c in zsyms}
-        value = _rational.substitute(formula_zeta, subs)
+        (k_in, s_in), (k_out, s_out) = _port_column(mo, act, "input"), _port_column(mo, act, "output")
+        fast = _ringformula.formula(act.values, k_out, k_in, -s_out / s_in, subs)
+        if fast is not None:
+            formula_zeta, value = fast
+        else:
+            formula_zeta = _rational.factored(-p_out / p_in)
+            value = _rational.substitute(formula_zeta, subs)
         if value.free_symbols:
             formula = value
-        zphys = {c: sympy.cancel(zetas[c] * _scale(net, c)) for c in zetas}
+        zphys = {c: _physical_zeta(zetas[c], _scale(net, c)) for c in zetas}
     else:
         value = -p_out / p_in
         zphys = zetas
@@ -290,6 +295,48 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
 def _scale(net, coupling):
     v = next(v for v in net.action_vars if v.coupling == coupling and v.role == "friction")
     return v.scale
+
+
+def _linear(expr):
+    """``(x, a, b)`` when *expr* is ``a x + b`` in one symbol with rational a, b; else None."""
+    symbols = expr.free_symbols
+    if len(symbols) > 1:
+        return None
+    x = next(iter(symbols), None)
+    terms = expr.as_coefficients_dict()
+    if any(k not in (x, sympy.S.One) or not v.is_Rational for k, v in terms.items()):
+        return None
+    return x, terms.get(x, sympy.S.Zero), terms.get(sympy.S.One, sympy.S.Zero)
+
+
+def _physical_zeta(z, scale):
+    """``cancel(z * scale)`` for a mesh's ``zeta(eta) = (a eta + b) / (c eta + d)``: integer
+    coefficients without a common factor, the denominator's leading one positive, the scale
+    (a length, possibly a square root) in front. Other forms go to :func:`sympy.cancel`."""
+    num, den = z.as_numer_denom()
+    n, d = _linear(num), _linear(den)
+    if n is None or d is None or (n[0] is not None and d[0] is not None and n[0] != d[0]):
+        return sympy.cancel(z * scale)
+    x = n[0] if n[0] is not None else d[0]
+    coefs = [n[1], n[2], d[1], d[2]]
+    lcm = sympy.ilcm(*[q.q for q in coefs])
+    ints = [int(q * lcm) for q in coefs]
+    g = sympy.igcd(*ints) or 1
+    sign = -1 if (ints[2] < 0 or (ints[2] == 0 and ints[3] < 0)) else 1
+    a, b, c, e = (sign * k // g for k in ints)
+    if x is None or (a == 0 and c == 0):
+        return sympy.nsimplify(scale * sympy.Rational(b, e)) if e else sympy.cancel(z * scale)
+    return scale * (a * x + b) / (c * x + e)
+
+
+def _port_column(mo, act, role):
+    """``(position of the port's torque among the actions, its screw dotted with the port's
+    motion)``: the port's power is the torque times that number."""
+    net = mo.network
+    c = net.port(role)
+    var = next(v for v in net.action_vars if v.coupling == c.name and v.role == role)
+    m = mo.screw(c.name)
+    return act._col(var.name), sum(var.screw[r] * m[r] for r in range(net.d))
 
 
 def _port_power(mo, act, role):
@@ -330,7 +377,8 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
             value = float(value)
         if not exact and not (0 < value <= 1):
             raise InputError(f"mesh {c.name} (gears {gp.gears}): ordinary efficiency {value} must be in (0, 1]")
-        _, zeta_of = mesh_power_ratio(mo, c.name, tail_drives=tail[c.name], internal=exact)
+        # exact: zeta(eta) is cancelled once, with its physical scale, for the mesh table
+        _, zeta_of = mesh_power_ratio(mo, c.name, tail_drives=tail[c.name], internal=exact, simplify=not exact)
         zetas[c.name] = zeta_of(value)
         used[c.name] = value
     return zetas, used, zsyms

@@ -132,13 +132,14 @@ def real_flows(mo: Motions, act: Actions, reference=None) -> dict:
     return {c.name: power_flow(mo, act, c.name, reference) for c in mo.network.couplings}
 
 
-def mesh_power_ratio(mo: Motions, coupling, *, tail_drives: bool, internal: bool = False):
+def mesh_power_ratio(mo: Motions, coupling, *, tail_drives: bool, internal: bool = False, simplify: bool = True):
     """The ordinary efficiency of a mesh as a function of its Coulomb coefficient: returns
     ``(eta(zeta), zeta(eta))`` as two callables built from the carrier-relative motions.
 
     The mesh action is ``U (f + zeta tau)`` (contact force and friction torque), so ``U``
     cancels from the ratio of the powers at the driven and the driving gear. With *internal*,
-    ``zeta`` is per unit of the network's friction screw (no square roots in exact work)."""
+    ``zeta`` is per unit of the network's friction screw (no square roots in exact work).
+    ``simplify=False`` leaves ``zeta(eta)`` uncancelled (for callers that cancel it later)."""
     net = mo.network
     c = net.coupling(coupling)
     fric = next(v for v in net.action_vars if v.coupling == c.name and v.role == "friction")
@@ -157,6 +158,7 @@ def mesh_power_ratio(mo: Motions, coupling, *, tail_drives: bool, internal: bool
 
     def zeta_of(eta):
         z = (eta * ft - fh) / (th - eta * tt)
-        return _simp(z * scale if scale != 1 else z)
+        z = z * scale if scale != 1 else z
+        return _simp(z) if simplify else z
 
     return eta_of, zeta_of

@@ -182,5 +182,5 @@ def actions(net: Network, *, lossless: bool | None = None, zeta=None, bearings=N
             "planet or a loop of bearings shares load in an undetermined way: model one planet (the efficiency "
             "does not change), or check the ports"
         ) from None
-    values = tuple(x) if exact else tuple(float(v) for v in x)
+    values = x if exact else tuple(float(v) for v in x)  # exact: read lazily (_solve.ExactSolution)
     return Actions(net, tuple(cols), values, lossless, torque, dict(zeta or {}))
