@@ -285,9 +285,18 @@ def symbolic():
     def naive_substitute(expr, subs):
         return sympy.factor(sympy.cancel(sympy.sympify(expr).subs(subs)))
 
+    from gearlib.davies import overall
+
+    plain_ratio = overall.mesh_power_ratio
+
+    def naive_mesh_ratio(*args, **kwargs):  # zeta(eta) cancelled where it is made
+        return plain_ratio(*args, **{**kwargs, "simplify": True})
+
     solvers = [mock.patch.object(_solve, "solve", naive_solve), mock.patch.object(_solve, "nullspace", naive_null)]
     algebra = [mock.patch.object(_rational, "factored", naive_factored),
-               mock.patch.object(_rational, "substitute", naive_substitute)]
+               mock.patch.object(_rational, "substitute", naive_substitute),
+               mock.patch.object(overall, "mesh_power_ratio", naive_mesh_ratio),
+               mock.patch.object(overall, "_physical_zeta", lambda z, scale: sympy.cancel(z * scale))]
     for label, patches, target in (
             ("every solve by sympy.solve / Matrix.nullspace, every simplification by sympy.cancel + factor",
              solvers + algebra, True),

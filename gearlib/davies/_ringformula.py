@@ -145,5 +145,9 @@ def formula(values, k_out: int, k_in: int, coef, subs: dict):
             const_eta /= c ** e
             for h, j in facs:
                 eta_counts[h] -= j * e
-    in_eta = sympy.factor(_product(const_eta, eta_counts))  # factor(): a constant outside the sums
-    return in_zeta, in_eta
+    # as sympy.factor prints it: the constant kept outside the sums (its factors are these,
+    # primitive and signed in the same generator order)
+    from sympy.core.mul import _keep_coeff
+
+    rest = sympy.Mul(*[f.as_expr() ** k for f, k in eta_counts.items() if k])
+    return in_zeta, _keep_coeff(sympy.Rational(const_eta), rest)
