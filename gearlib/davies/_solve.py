@@ -81,7 +81,8 @@ class ExactSolution(Sequence):
 
 def _few_symbols(A: sympy.Matrix, b: sympy.Matrix, most: int = 12):
     """Solve ``A x = b`` when only a few entries of *A* hold a symbol, each as ``c * symbol``
-    (a friction row ``T_f - zeta U = 0`` of a lossy action analysis), by the Woodbury
+    with a symbol of its own (a friction row ``T_f - zeta U = 0`` of a lossy action
+    analysis), by the Woodbury
     identity; None when that does not apply (then the caller eliminates the whole system).
 
     Write ``A = A0 + U Z V^T``: ``A0`` is *A* with those entries zero, ``Z`` holds the entries
@@ -101,7 +102,9 @@ def _few_symbols(A: sympy.Matrix, b: sympy.Matrix, most: int = 12):
                 return None
             entries.append((r, c, coef, sym))
     k = len(entries)
-    if not entries or k > most:
+    if not entries or k > most or len({sym for *_, sym in entries}) < k:
+        # each symbol in one entry only (a friction coefficient meets one row): then every
+        # solution is multilinear in the symbols, as the formula's fast factoring expects
         return None
     A0 = A.copy()
     for r, c, _, _ in entries:

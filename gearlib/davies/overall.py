@@ -379,7 +379,10 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
             raise InputError(f"mesh {c.name} (gears {gp.gears}): ordinary efficiency {value} must be in (0, 1]")
         # exact: zeta(eta) is cancelled once, with its physical scale, for the mesh table
         _, zeta_of = mesh_power_ratio(mo, c.name, tail_drives=tail[c.name], internal=exact, simplify=not exact)
-        zetas[c.name] = zeta_of(value)
+        z = zeta_of(value)
+        if exact and len(getattr(z, "free_symbols", ())) > 1:
+            z = sympy.cancel(z)  # radii as symbols too: reduce it now, as the general route needs
+        zetas[c.name] = z
         used[c.name] = value
     return zetas, used, zsyms
 
