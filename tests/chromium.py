@@ -269,7 +269,14 @@ class Page:
         """Poll a JavaScript expression until it is truthy; False if it never was."""
         end = time.monotonic() + timeout
         while time.monotonic() < end:
-            if self.evaluate(expression):
-                return True
+            try:
+                if self.evaluate(expression):
+                    return True
+            except CDPError as err:
+                # asked while the page navigates (a redirect): the old document is gone and
+                # the new one not ready yet; ask again. Anything else is a real error.
+                if not any(m in str(err) for m in ("navigated or closed", "context was destroyed",
+                                                   "Cannot find context")):
+                    raise
             time.sleep(interval)
         return False
