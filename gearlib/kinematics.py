@@ -91,8 +91,8 @@ class Constraints:
         seen = set()
         for key, value in items:
             u, v = cls._input_key(mech, key, ground)
-            if u != v and u not in held and (u, v) not in seen and (v, u) not in seen and value is not None \
-                    and type(value) in (int, float) and value == value and -_INF < value < _INF:
+            if u != v and u not in held and (u, v) not in seen and (v, u) not in seen \
+                    and type(value) in (int, float) and _finite(value):
                 seen.add((u, v))  # the common case, valid: skip the checks below
                 out.append((u, v, value))
                 continue
@@ -164,9 +164,6 @@ class Constraints:
 
     def describe_input(self, u, v) -> str:
         return f"{u}" if v == self.ground else f"{u}/{v}"
-
-
-_INF = float("inf")
 
 
 def _finite(x) -> bool:
@@ -437,9 +434,7 @@ def _coo(mech, cons):
     Returns ``(rows, cols, data, shape, b, dtype)``; complex when a gear ratio or an input is.
     """
     m = len(mech.links)
-    ratios = [gp.e_value for gp in mech.gear_pairs]
-    vals = [_to_complex(v) for _, _, v in cons.inputs]
-    is_complex = any(r.imag != 0 for r in ratios) or any(v.imag != 0 for v in vals)
+    ratios, vals, is_complex = _numbers(mech, cons)
     dtype = complex if is_complex else float
     ix = mech.index
     n = len(ratios)
@@ -467,6 +462,14 @@ def _coo(mech, cons):
     return np.concatenate(rows), np.concatenate(cols), np.concatenate(data), shape, b, dtype
 
 
+def _numbers(mech, cons):
+    """The gear ratios and the input speeds as (complex) numbers, and whether any of them has
+    an imaginary part (then the system is complex)."""
+    ratios = [gp.e_value for gp in mech.gear_pairs]
+    vals = [_to_complex(v) for _, _, v in cons.inputs]
+    return ratios, vals, any(r.imag != 0 for r in ratios) or any(v.imag != 0 for v in vals)
+
+
 def _numeric_matrix(mech, cons):
     """The dense ``A x = b`` of the Willis and constraint rows (the LAPACK baseline's input)."""
     rows, cols, data, shape, b, dtype = _coo(mech, cons)
@@ -487,22 +490,22 @@ def _numeric(mech, cons):
     system is not square (redundant gear pairs) or singular, the null-space method decides
     the degrees of freedom and explains what is wrong with the inputs.
     """
-    key = (cons.ground, cons.held, cons.joined, tuple([(u, v) for u, v, _ in cons.inputs]))
+    key = _plan_key(cons)
     cache = mech.__dict__.setdefault("_speed_plans", {})
     entry = cache.get(key)
     if entry is None:
         plan = _numeric_plan(mech, cons)
-        # one real input on a small mechanism: keep the column as a Python list too, so a
-        # call is a list times a number (numpy's per-call overhead dominates at this size)
+        # one real input on a small mechanism: keep the column as a Python list too (with its
+        # largest entry), so a call is a list times a number (numpy's per-call overhead
+        # dominates at this size)
         small = plan[:, 0].tolist() if plan.dtype == float and plan.shape[1] == 1 and plan.shape[0] <= 64 else None
         if len(cache) >= _PLAN_CACHE_SIZE:
             cache.pop(next(iter(cache)))
-        entry = cache[key] = (plan, small)
-    plan, small = entry
+        entry = cache[key] = (plan, small, None if small is None else max(map(abs, small), default=0.0))
+    plan, small, largest = entry
     values = [v if type(v) in (int, float) else _to_complex(v) for _, _, v in cons.inputs]
     if small is not None and type(values[0]) is not complex:
-        v = values[0]
-        return _clean_small([x * v for x in small]), 1
+        return _scaled(small, largest, values[0]), 1
     if plan.dtype != complex and any(type(v) is complex and v.imag for v in values):
         values = np.array(values, dtype=complex)
     return _clean(plan @ np.asarray(values)), len(cons.inputs)
@@ -517,8 +520,7 @@ def _dense_small(mech, cons):
     n = len(mech.gear_pairs)
     if n + len(cons_rows) != m:
         return None
-    ratios = [gp.e_value for gp in mech.gear_pairs]
-    is_complex = any(r.imag != 0 for r in ratios) or any(_to_complex(v).imag != 0 for _, _, v in cons.inputs)
+    ratios, _, is_complex = _numbers(mech, cons)
     A = [[0.0] * m for _ in range(m)]  # Python lists: an entry costs far less than in an array
     ix = mech.index
     for row, gp, e in zip(A, mech.gear_pairs, ratios):
@@ -534,46 +536,45 @@ def _dense_small(mech, cons):
 
 
 def _numeric_plan(mech, cons) -> np.ndarray:
-    m = len(mech.links)
-    k = len(cons.inputs)
-    A = _dense_small(mech, cons) if m <= 64 and k else None
-    if A is not None:
-        rhs = np.zeros((m, k), dtype=A.dtype)
-        rhs[m - k + np.arange(k), np.arange(k)] = 1  # input rows come last
-        try:
+    m, k = len(mech.links), len(cons.inputs)
+    omega0 = _square_plan(mech, cons, m, k) if k else None
+    # not square, or singular: the null space finds the degrees of freedom, checks the inputs
+    return omega0 if omega0 is not None else _nullspace_plan(mech, cons)
+
+
+def _square_plan(mech, cons, m, k):
+    """``Omega_0`` from the square system by one LU factorisation (dense up to 64 links,
+    sparse above), or None when the system is not square or is singular."""
+    if m <= 64:
+        A = _dense_small(mech, cons)
+        if A is None:
+            return None
+        dtype = A.dtype
+    else:
+        rows, cols, data, shape, _, dtype = _coo(mech, cons)
+        if shape[0] != m:
+            return None
+    rhs = np.zeros((m, k), dtype=dtype)
+    rhs[m - k + np.arange(k), np.arange(k)] = 1  # input rows come last
+    try:
+        if m <= 64:
             omega0 = np.linalg.solve(A, rhs)
-        except np.linalg.LinAlgError:
-            return _nullspace_plan(mech, cons)
-        # the same acceptance test as below, on Python floats (cheaper at this size)
-        flat = omega0.ravel().tolist()
-        residual = max(map(abs, (A @ omega0 - rhs).ravel().tolist()))
-        if cmath.isfinite(sum(flat)) and residual <= 1e-9 * max(1.0, max(map(abs, flat))):
-            return omega0
-        return _nullspace_plan(mech, cons)
-    rows, cols, data, shape, _, dtype = _coo(mech, cons)
-    if shape[0] == m and k:
-        rhs = np.zeros((m, k), dtype=dtype)
-        rhs[m - k + np.arange(k), np.arange(k)] = 1  # input rows come last
-        try:
+        else:
+            import scipy.sparse
+            import scipy.sparse.linalg
+
+            A = scipy.sparse.csc_matrix((data, (rows, cols)), shape=shape)
             with warnings.catch_warnings():
                 warnings.simplefilter("error")
-                if m > 64:
-                    import scipy.sparse
-                    import scipy.sparse.linalg
-
-                    A = scipy.sparse.csc_matrix((data, (rows, cols)), shape=shape)
-                    omega0 = scipy.sparse.linalg.splu(A).solve(rhs)
-                else:
-                    A = np.zeros(shape, dtype=dtype)
-                    np.add.at(A, (rows, cols), data)
-                    omega0 = np.linalg.solve(A, rhs)
-            scale = max(1.0, float(np.abs(omega0).max()))
-            if np.all(np.isfinite(omega0)) and np.abs(A @ omega0 - rhs).max() <= 1e-9 * scale:
-                return omega0
-        except (np.linalg.LinAlgError, RuntimeError, Warning):
-            pass
-    # not square, or singular: the null space finds the degrees of freedom, checks the inputs
-    return _nullspace_plan(mech, cons)
+                omega0 = scipy.sparse.linalg.splu(A).solve(rhs)
+    except (np.linalg.LinAlgError, RuntimeError, Warning):
+        return None
+    # accepted when finite with a residual at round-off (on Python floats: cheap at any size here)
+    flat = omega0.ravel().tolist()
+    residual = max(map(abs, (A @ omega0 - rhs).ravel().tolist()))
+    if all(map(cmath.isfinite, flat)) and residual <= 1e-9 * max(1.0, max(map(abs, flat))):
+        return omega0
+    return None
 
 
 def _nullspace_plan(mech, cons) -> np.ndarray:
@@ -628,16 +629,19 @@ def _remember_numeric(mech, ground, inputs, cons):
     skips the validation: :func:`_repeat_numeric`."""
     if len(inputs) != 1 or len(cons.inputs) != 1:
         return
-    key = _repeat_key(ground, inputs)
-    entry = mech.__dict__.setdefault("_speed_plans", {}).get(
-        (cons.ground, cons.held, cons.joined, tuple([(u, v) for u, v, _ in cons.inputs])))
-    if entry is None or entry[1] is None:
+    _, small, largest = mech.__dict__.get("_speed_plans", {}).get(_plan_key(cons), (None, None, None))
+    if small is None:
         return
     fast = mech.__dict__.setdefault("_speed_repeat", {})
     if len(fast) >= _PLAN_CACHE_SIZE:
         fast.pop(next(iter(fast)))
-    column = entry[1]
-    fast[key] = (cons.ground, tuple([(u, v) for u, v, _ in cons.inputs]), column, max(map(abs, column), default=0.0))
+    u, w, _ = cons.inputs[0]
+    fast[_repeat_key(ground, inputs)] = (cons.ground, u, w, small, largest)
+
+
+def _plan_key(cons) -> tuple:
+    """What a numeric plan depends on: the ground, brakes, clutches and the input links."""
+    return cons.ground, cons.held, cons.joined, tuple([(u, v) for u, v, _ in cons.inputs])
 
 
 def _repeat_key(ground, inputs):
@@ -658,19 +662,17 @@ def _repeat_numeric(mech, ground, inputs):
     if entry is None:
         return None
     v = next(iter(inputs.values()))
-    if type(v) not in (int, float) or not -_INF < v < _INF:
+    if type(v) not in (int, float) or not _finite(v):
         return None  # NaN, infinities, other types: the full path gives the error message
-    g, pairs, column, largest = entry
-    (u, w), = pairs
-    lim = 1e-12 * max(1.0, abs(v) * largest)  # _clean's rule, in one pass
-    values = tuple([0.0 if -lim < (y := x * v) < lim else y for x in column])
-    return Solution(mech, Constraints(mech, g, (), (), ((u, w, v),)), values, "numeric", 1)
+    g, u, w, column, largest = entry
+    return Solution(mech, Constraints(mech, g, (), (), ((u, w, v),)), tuple(_scaled(column, largest, v)), "numeric", 1)
 
 
-def _clean_small(xs: list) -> list:
-    """:func:`_clean` for a short list of real floats."""
-    scale = 1e-12 * max(1.0, max(map(abs, xs), default=0.0))
-    return [0.0 if -scale < x < scale else x for x in xs]
+def _scaled(column: list, largest: float, v) -> list:
+    """``column * v`` cleaned as :func:`_clean` does (``largest``: the largest ``|column|``),
+    in one pass over Python floats."""
+    lim = 1e-12 * max(1.0, abs(v) * largest)
+    return [0.0 if -lim < (y := x * v) < lim else y for x in column]
 
 
 def _clean(x) -> list:
