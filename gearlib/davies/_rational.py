@@ -19,37 +19,50 @@ def _factors(poly_expr):
     return const, facs
 
 
+def rings(symbols):
+    """The rational and the integer polynomial rings of *symbols*, in sympy's own order of
+    generators (it fixes the signs of the factors as :func:`sympy.factor` prints them)."""
+    from sympy.polys.polyutils import _sort_gens
+    from sympy.polys.rings import ring
+
+    order = _sort_gens(list(symbols))
+    return ring(order, sympy.QQ)[0], ring(order, sympy.ZZ)[0]
+
+
+def ring_factor_list(p, Z):
+    """``(constant, [(factor over ZZ, multiplicity)])`` of a polynomial *p* over QQ, with
+    :func:`gearlib._multilinear.factor_list` in *Z*, its ring over the integers."""
+    from .._multilinear import factor_list
+
+    den, p = p.clear_denoms()  # p * den has integer coefficients
+    const, facs = factor_list(p.set_ring(Z))
+    return sympy.Rational(int(const)) / sympy.Rational(den), facs
+
+
 def _ring_factors(expr):
     """``((cn, fn), (cd, fd))`` as :func:`sympy.factor_list` gives them for the numerator and
     the denominator of *expr*, computed in the integer polynomial ring of its symbols (in
     the order sympy gives them) with :func:`gearlib._multilinear.factor_list`; None when
     *expr* is not a rational function with rational coefficients."""
     from sympy.polys.polytools import _sorted_factors
-    from sympy.polys.polyutils import _sort_gens
-    from sympy.polys.rings import ring
 
-    from .._multilinear import factor_list
-
-    symbols = _sort_gens(list(expr.free_symbols))  # sympy's own order: it fixes the signs of the factors
-    if not symbols or any(not s.is_Symbol for s in symbols):
+    if not expr.free_symbols or any(not s.is_Symbol for s in expr.free_symbols):
         return None
-    R = ring(symbols, sympy.QQ)[0]
+    R, Z = rings(expr.free_symbols)
     try:
         num, den = (R.from_expr(part) for part in expr.as_numer_denom())
     except (ValueError, TypeError, sympy.polys.polyerrors.PolynomialError, sympy.polys.polyerrors.CoercionFailed):
         return None
     if not den:
         return None
-    Z = ring(symbols, sympy.ZZ)[0]
+    symbols = R.symbols
     out = []
     for p in (num, den):
-        c, p = p.clear_denoms()  # p * c has integer coefficients
-        const, facs = factor_list(p.set_ring(Z))
+        const, facs = ring_factor_list(p, Z)
         # sympy's order of the factors (it decides which sum absorbs the constant when printed)
-        used = [x for i, x in enumerate(symbols) if any(m[i] for m in p.itermonoms())] or symbols[:1]
+        used = [x for i, x in enumerate(symbols) if any(m[i] for m in p.itermonoms())] or list(symbols[:1])
         polys = [(sympy.Poly(f.as_expr(), *used, domain=sympy.ZZ), k) for f, k in facs]
-        out.append((sympy.Rational(int(const)) / sympy.Rational(c),
-                    [(f.as_expr(), k) for f, k in _sorted_factors(polys, "factor")]))
+        out.append((const, [(f.as_expr(), k) for f, k in _sorted_factors(polys, "factor")]))
     return out
 
 

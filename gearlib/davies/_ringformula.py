@@ -24,35 +24,10 @@ from collections import Counter
 
 import sympy
 
+from ._rational import ring_factor_list as _factor, rings as _rings
 from ._solve import ExactSolution
 
 __all__ = ["formula"]
-
-
-def _rings(symbols):
-    """The rational and the integer polynomial rings of *symbols*, in sympy's own order of
-    generators (it fixes the signs of the factors as :func:`sympy.factor` prints them)."""
-    from sympy.polys.polyutils import _sort_gens
-    from sympy.polys.rings import ring
-
-    order = _sort_gens(list(symbols))
-    return ring(order, sympy.QQ)[0], ring(order, sympy.ZZ)[0]
-
-
-def _reorder(elem, source_symbols, Q):
-    """A polynomial of another ring as an element of *Q* (same symbols, other order)."""
-    pos = [source_symbols.index(s) for s in Q.symbols]
-    dom = elem.ring.domain
-    return Q.from_dict({tuple(m[i] for i in pos): Q.domain.convert_from(c, dom) for m, c in elem.items()})
-
-
-def _factor(p, Z):
-    """``(constant, [(factor over ZZ, multiplicity)])`` of a polynomial over QQ."""
-    from .._multilinear import factor_list
-
-    den, p = p.clear_denoms()
-    const, facs = factor_list(p.set_ring(Z))
-    return sympy.Rational(int(const)) / sympy.Rational(den), facs
 
 
 def _product(const, counts) -> sympy.Expr:
@@ -80,8 +55,8 @@ def formula(values, k_out: int, k_in: int, coef, subs: dict):
     if not set(symbols) <= set(subs):
         return None
     Q, Z = _rings(symbols)
-    n_out = _reorder(values.numerators[k_out], symbols, Q)
-    n_in = _reorder(values.numerators[k_in], symbols, Q)
+    n_out = values.numerators[k_out].set_ring(Q)  # set_ring reorders the generators
+    n_in = values.numerators[k_in].set_ring(Q)
     if not n_in:
         return None
     cn, fn = _factor(n_out, Z)

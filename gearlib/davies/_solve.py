@@ -82,8 +82,8 @@ class ExactSolution(Sequence):
 def _few_symbols(A: sympy.Matrix, b: sympy.Matrix, most: int = 12):
     """Solve ``A x = b`` when only a few entries of *A* hold a symbol, each as ``c * symbol``
     with a symbol of its own (a friction row ``T_f - zeta U = 0`` of a lossy action
-    analysis), by the Woodbury
-    identity; None when that does not apply (then the caller eliminates the whole system).
+    analysis), by the Woodbury identity; None when that does not apply (then the caller
+    eliminates the whole system).
 
     Write ``A = A0 + U Z V^T``: ``A0`` is *A* with those entries zero, ``Z`` holds the entries
     and ``U``, ``V`` pick their rows and columns. With ``[x0, W] = A0^-1 [b, U]`` (rational
@@ -139,11 +139,11 @@ def solve(matrix, rhs, exact: bool, what: str = "system"):
     solution is not unique or does not exist."""
     n = matrix.shape[1]
     if exact:
-        low_rank = _few_symbols(sympy.Matrix(matrix), sympy.Matrix(rhs))
+        A, b = sympy.Matrix(matrix), sympy.Matrix(rhs)
+        low_rank = _few_symbols(A, b)
         if low_rank is not None:
             return low_rank
-        aug = sympy.Matrix(matrix).row_join(sympy.Matrix(rhs))
-        dm = DomainMatrix.from_Matrix(aug)
+        dm = DomainMatrix.from_Matrix(A.row_join(b))
         rref, den, pivots = dm.rref_den()  # fraction-free: fast over polynomial rings
         if n in pivots:
             raise ValueError(f"the {what} has no solution")

@@ -34,7 +34,6 @@ falls back, saying so in ``Layout.notes``.
 from __future__ import annotations
 
 import functools
-
 import math
 from dataclasses import dataclass, field, replace
 

@@ -253,12 +253,11 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
         lossless = act
     else:
         raise ConstraintError("the power flow directions do not settle: the train is near self-locking")
-    p_in = _port_power(mo, act, "input")
-    p_out = _port_power(mo, act, "output")
+    (k_in, s_in), (k_out, s_out) = _port_column(mo, act, "input"), _port_column(mo, act, "output")
+    p_in, p_out = act.values[k_in] * s_in, act.values[k_out] * s_out
     formula = formula_zeta = None
     if exact:
         subs = {zsyms[c]: zetas[c] for c in zsyms}
-        (k_in, s_in), (k_out, s_out) = _port_column(mo, act, "input"), _port_column(mo, act, "output")
         fast = _ringformula.formula(act.values, k_out, k_in, -s_out / s_in, subs)
         if fast is not None:
             formula_zeta, value = fast
@@ -318,14 +317,14 @@ def _physical_zeta(z, scale):
     if n is None or d is None or (n[0] is not None and d[0] is not None and n[0] != d[0]):
         return sympy.cancel(z * scale)
     x = n[0] if n[0] is not None else d[0]
+    if x is None:  # a number (exact efficiencies given)
+        return sympy.cancel(z * scale)
     coefs = [n[1], n[2], d[1], d[2]]
     lcm = sympy.ilcm(*[q.q for q in coefs])
     ints = [int(q * lcm) for q in coefs]
     g = sympy.igcd(*ints) or 1
     sign = -1 if (ints[2] < 0 or (ints[2] == 0 and ints[3] < 0)) else 1
     a, b, c, e = (sign * k // g for k in ints)
-    if x is None or (a == 0 and c == 0):
-        return sympy.nsimplify(scale * sympy.Rational(b, e)) if e else sympy.cancel(z * scale)
     return scale * (a * x + b) / (c * x + e)
 
 
@@ -340,11 +339,8 @@ def _port_column(mo, act, role):
 
 
 def _port_power(mo, act, role):
-    net = mo.network
-    c = net.port(role)
-    var = next(v for v in net.action_vars if v.coupling == c.name and v.role == role)
-    m = mo.screw(c.name)
-    return act.raw(var.name) * sum(var.screw[r] * m[r] for r in range(net.d))
+    k, s = _port_column(mo, act, role)
+    return act.values[k] * s
 
 
 def _port_speed(mo, role):
@@ -377,12 +373,11 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
             value = float(value)
         if not exact and not (0 < value <= 1):
             raise InputError(f"mesh {c.name} (gears {gp.gears}): ordinary efficiency {value} must be in (0, 1]")
-        # exact: zeta(eta) is cancelled once, with its physical scale, for the mesh table
-        _, zeta_of = mesh_power_ratio(mo, c.name, tail_drives=tail[c.name], internal=exact, simplify=not exact)
+        # zeta(eta) is linear over linear in eta: cancelled later, once, with its physical scale
+        # (_physical_zeta); with radii as symbols too, the general route needs it reduced now
+        _, zeta_of = mesh_power_ratio(mo, c.name, tail_drives=tail[c.name], internal=exact, simplify=False)
         z = zeta_of(value)
-        if exact and len(getattr(z, "free_symbols", ())) > 1:
-            z = sympy.cancel(z)  # radii as symbols too: reduce it now, as the general route needs
-        zetas[c.name] = z
+        zetas[c.name] = sympy.cancel(z) if len(getattr(z, "free_symbols", ())) > 1 else z
         used[c.name] = value
     return zetas, used, zsyms
 
