@@ -138,11 +138,7 @@ def numeric_speeds():
         # cold: the first call on a mechanism object never solved before (nothing cached on it:
         # validation, assembly and factorisation all count); identical fresh copies, best of five
         fresh = [gl.random_mechanism(n, dof=1, rng=n) for _ in range(5)]
-        cold = []
-        for mech in fresh:
-            t = time.perf_counter()
-            gl.speeds(mech, ground=0, inputs={1: 1}, method="numeric")
-            cold.append(time.perf_counter() - t)
+        cold = [_timed(lambda mech=mech: gl.speeds(mech, ground=0, inputs={1: 1}, method="numeric")) for mech in fresh]
         script = min(_timed(lambda mech=mech: _numpy_first_call(mech, ground=0, input=1)) for mech in fresh)
         if not np.allclose(_numpy_first_call(m, 0, 1), gl.speeds(m, ground=0, inputs={1: 1}, method="numeric").values,
                            rtol=1e-9, atol=1e-9):

@@ -215,7 +215,6 @@ def test_brakes_and_clutches_make_the_gears_of_a_simpson_set():
     assert direct == 1
 
 
-
 @pytest.mark.parametrize("seed", range(4))
 def test_repeated_numeric_calls_equal_a_first_call(seed):
     """A second numeric solve with the same ground and input link skips validation
@@ -234,4 +233,3 @@ def test_repeated_numeric_calls_equal_a_first_call(seed):
     for bad in (float("nan"), float("inf"), "fast"):
         with pytest.raises(gl.errors.GearlibError, match="input 1"):
             gl.speeds(m, ground=0, inputs={1: bad}, method="numeric")
-
