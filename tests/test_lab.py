@@ -30,7 +30,8 @@ import pytest
 from chromium import Chromium, find_chromium
 from notebook_tools import ROOT
 
-pytestmark = pytest.mark.browser
+# one worker runs every chapter (one JupyterLab server; under `--dist loadgroup`)
+pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("jupyterlab")]
 
 HTML = pathlib.Path(os.environ.get("BOOK_HTML", ROOT / "book" / "_build" / "html")).resolve()
 SHOTS = HTML.parent / "screenshots"
