@@ -1,20 +1,15 @@
 """The command line: numbers, JSON, and one-line errors with exit status 2."""
 
 import json
-import subprocess
-import sys
 
 import pytest
 
-from notebook_tools import ROOT
-
-
-def run(*args):
-    return subprocess.run([sys.executable, "-m", "gearlib", *args], capture_output=True, text=True, cwd=ROOT)
+from cli_tools import run, run_subprocess
 
 
 def test_speeds_json_cornering_car():
-    out = run("speeds", "car_differential", "--ground", "1", "--input", "3=26", "--input", "4=30", "--json")
+    # a real `python -m gearlib` in a new interpreter, as a user runs it (the others run in process)
+    out = run_subprocess("speeds", "car_differential", "--ground", "1", "--input", "3=26", "--input", "4=30", "--json")
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
     assert data["dof"] == 2
@@ -62,5 +57,5 @@ def test_errors_are_one_line_and_exit_2(args, text):
 
 def test_empty_file_is_a_clean_error(tmp_path):
     (tmp_path / "e.yaml").write_text("")
-    out = run("dof", str(tmp_path / "e.yaml"))
+    out = run_subprocess("dof", str(tmp_path / "e.yaml"))  # a real one: status 2, no traceback
     assert out.returncode == 2 and "empty" in out.stderr and "Traceback" not in out.stderr

@@ -1,15 +1,13 @@
 """The coupling graph, the layout, the network matrices, bad input, drawings, widget and CLI."""
 
 import json
-import subprocess
-import sys
 
 import numpy as np
 import pytest
 import sympy
 
 import gearlib as gl
-from notebook_tools import ROOT
+from cli_tools import run
 
 dv = gl.davies
 
@@ -184,10 +182,6 @@ def test_with_teeth_keeps_the_module():
 
 
 # ------------------------------------------------------------------ command line
-def run(*args):
-    return subprocess.run([sys.executable, "-m", "gearlib", *args], capture_output=True, text=True, cwd=ROOT)
-
-
 def test_cli_efficiency_json_and_symbolic():
     out = run("efficiency", "laus_epicyclic", "--ground", "1", "--input", "5", "--output", "2", "--eta", "0.99",
               "--symbolic", "--json")

@@ -8,8 +8,6 @@ PA-E6) or hand formulas written out here; none comes from gearlib.
 
 import json
 import math
-import subprocess
-import sys
 from fractions import Fraction
 
 import pytest
@@ -17,7 +15,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import gearlib as gl
-from notebook_tools import ROOT
+from cli_tools import run
 
 PRINTED_1 = 0.05  # half a unit of one printed decimal
 
@@ -324,34 +322,24 @@ def test_static_twin_plots(car):
 
 
 # ----------------------------------------------------------------------------- command line
-def cli(capsys, *args):
-    """Run the command line in this process (fast); returns (status, stdout, stderr)."""
-    from gearlib.cli import main
-
-    status = main(list(args))
-    out = capsys.readouterr()
-    return status, out.out, out.err
-
-
 CORNER = ("frequencies", "car_differential", "--ground", "1", "--input", "3=26", "--input", "4=30")
 
 
 def test_cli_frequencies_json_paper_convention():
-    # one real subprocess: `python -m gearlib` as a user runs it
-    out = subprocess.run([sys.executable, "-m", "gearlib", *CORNER, "--convention", "paper", "--json"],
-                         capture_output=True, text=True, cwd=ROOT)
+    out = run(*CORNER, "--convention", "paper", "--json")
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
     freqs = sorted({round(r["frequency"], 1) for r in data["rows"]})
     assert freqs == [2.0, 2.8, 28.0, 140.0, 310.6, 318.7, 381.3, 1820.0]  # Table A's numbers
 
 
-def test_cli_frequencies_with_a_bearings_file(tmp_path, capsys):
+def test_cli_frequencies_with_a_bearings_file(tmp_path):
     path = tmp_path / "b.yaml"
     path.write_text("- {pair: [1, 2], name: pinion bearing, pitch_diameter: 40, ball_diameter: 8, balls: 9, "
                     "inner: 2}\n")
-    status, out, err = cli(capsys, *CORNER, "--bearings", str(path))
-    assert status == 0, err
+    result = run(*CORNER, "--bearings", str(path))
+    assert result.returncode == 0, result.stderr
+    out = result.stdout
     # the pinion turns at 140 rad/s: BPFO = 4.5 (1 - 0.2) 140 = 504
     assert "504" in out and "pinion bearing" in out
 
@@ -361,11 +349,12 @@ def test_cli_frequencies_with_a_bearings_file(tmp_path, capsys):
     (("--input", "3=26", "--input", "4=30", "--bearings", "nope.yaml"), "no such file"),
     (("--input", "3=26", "--input", "4=30", "--bearings", "BAD"), "not a turning pair"),
 ])
-def test_cli_errors_are_one_line(tmp_path, capsys, extra, text):
+def test_cli_errors_are_one_line(tmp_path, extra, text):
     bad = tmp_path / "bad.yaml"
     bad.write_text("- {pair: [2, 5], pitch_diameter: 54, ball_diameter: 5, balls: 25}\n")
     extra = tuple(str(bad) if x == "BAD" else x for x in extra)
-    status, _, err = cli(capsys, "frequencies", "car_differential", "--ground", "1", *extra)
+    result = run("frequencies", "car_differential", "--ground", "1", *extra)
+    status, err = result.returncode, result.stderr
     assert status == 2
     assert "Traceback" not in err and text in err
     assert len(err.strip().splitlines()) == 1

@@ -6,8 +6,6 @@ gl.speeds(..., method="nullspace"), an independent solver.
 """
 
 import json
-import subprocess
-import sys
 from fractions import Fraction
 
 import numpy as np
@@ -17,7 +15,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import gearlib as gl
-from notebook_tools import ROOT
+from cli_tools import run
 
 E = sympy.Symbol
 
@@ -215,10 +213,6 @@ def test_propagation_equals_null_space_on_random_mechanisms(seed, n, dof, bevel)
 
 
 # --------------------------------------------------------------------- command line
-def run(*args):
-    return subprocess.run([sys.executable, "-m", "gearlib", *args], capture_output=True, text=True, cwd=ROOT)
-
-
 def test_cli_gains_third_gear():
     out = run("gains", "liu_chen_transmission", "--ground", "1", "--input", "4", "--output", "8", "--symbolic",
               "--json")

@@ -2,15 +2,13 @@
 and the exercise checks. Each must give a one-line, specific gearlib error (the command line:
 exit status 2, one line on stderr, no traceback), and nothing may be written or changed."""
 
-import contextlib
-import io
 import math
 import os
 
 import pytest
 
 import gearlib as gl
-from gearlib.cli import main as cli_main
+from cli_tools import run
 
 GOOD = gl.catalog.path("simple_planetary").read_text()
 
@@ -161,20 +159,16 @@ def test_command_line(tmp_path, argv, message):
     (tmp_path / "NOT_A_MAPPING").write_text("- a\n")
     argv = [str(tmp_path / a) if a in ("EMPTY", "NOT_A_MAPPING") else a for a in argv]
     before = sorted(os.listdir(tmp_path))
-    err, out = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
-        code = cli_main(argv)
-    assert code == 2
-    lines = err.getvalue().strip().splitlines()
-    assert len(lines) == 1 and message in lines[0] and "Traceback" not in err.getvalue()
+    result = run(*argv)
+    assert result.returncode == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and message in lines[0] and "Traceback" not in result.stderr
     assert sorted(os.listdir(tmp_path)) == before
 
 
 def test_command_line_usage_errors_exit_2():
-    err = io.StringIO()
-    with contextlib.redirect_stderr(err), pytest.raises(SystemExit) as info:
-        cli_main(["speeds"])
-    assert info.value.code == 2 and "Traceback" not in err.getvalue()
+    result = run("speeds")
+    assert result.returncode == 2 and "Traceback" not in result.stderr and "usage:" in result.stderr
 
 
 # ----------------------------------------------------------------------------- exercise checks

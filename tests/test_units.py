@@ -7,15 +7,13 @@ by brute force, independently of the library's isomorphism test.
 
 import itertools
 import json
-import subprocess
-import sys
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import gearlib as gl
-from notebook_tools import ROOT
+from cli_tools import run
 
 
 def units_of(name):
@@ -230,12 +228,10 @@ def test_plan_errors_name_the_problem():
 
 # --------------------------------------------------------------------- command line
 def test_cli_units_json():
-    out = subprocess.run([sys.executable, "-m", "gearlib", "units", "liu_chen_fig1", "--json"],
-                         capture_output=True, text=True, cwd=ROOT)
+    out = run("units", "liu_chen_fig1", "--json")
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
     assert [u["type"] for u in data["units"]] == ["K3-1", "K4-1S"]
     assert data["common_linkages"] == [{"kind": "2-link chain", "units": ["KU1", "KU2"], "links": [1, 5], "axis": "a"}]
-    bad = subprocess.run([sys.executable, "-m", "gearlib", "units", "nope.yaml"], capture_output=True, text=True,
-                         cwd=ROOT)
+    bad = run("units", "nope.yaml")
     assert bad.returncode == 2 and "Traceback" not in bad.stderr and len(bad.stderr.strip().splitlines()) == 1
