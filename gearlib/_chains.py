@@ -17,6 +17,7 @@ root of a non-zero polynomial, with probability below ``1e-15``.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import random
 from dataclasses import dataclass
@@ -120,11 +121,13 @@ def _find(parent: dict, i):
 
 
 # ---------------------------------------------------------------- enumeration
-def _hypertrees(n: int):
-    """``(groups, automorphisms)`` for every non-isomorphic hypertree on *n* links."""
+@functools.cache
+def _hypertrees(n: int) -> tuple:
+    """``(groups, automorphisms)`` for every non-isomorphic hypertree on *n* links (cached:
+    chains of every dof with *n* links start from the same trees)."""
     import networkx as nx
-    from networkx.algorithms.isomorphism import GraphMatcher
 
+    out = []
     for k in range(1, n):
         for tree in nx.nonisomorphic_trees(n + k):
             colour = nx.bipartite.color(tree)
@@ -134,11 +137,44 @@ def _hypertrees(n: int):
                 if len(links) != n or any(tree.degree(g) < 2 for g in groups):
                     continue
                 idx = {v: i for i, v in enumerate(links)}
-                for v in tree:
-                    tree.nodes[v]["link"] = v in idx
-                matcher = GraphMatcher(tree, tree, node_match=lambda x, y: x["link"] == y["link"])
-                autos = [tuple(idx[m[v]] for v in links) for m in matcher.isomorphisms_iter()]
-                yield [frozenset(idx[v] for v in tree[g]) for g in groups], autos
+                groups = tuple(frozenset(idx[v] for v in tree[g]) for g in groups)
+                out.append((groups, automorphisms(n, groups)))
+    return tuple(out)
+
+
+def automorphisms(n: int, groups) -> tuple:
+    """Every permutation ``p`` of the links (``p[i]``: the image of link ``i``) that maps the
+    coaxial groups onto themselves: the automorphisms of the hypertree, which its groups'
+    member sets determine (two groups of a tree share at most one link).
+
+    Backtracking over the links in order, each tried only on the links of its colour after
+    colour refinement, and a group checked as soon as its last member has an image.
+
+    >>> automorphisms(3, [frozenset({0, 1}), frozenset({1, 2})])
+    ((0, 1, 2), (2, 1, 0))
+    """
+    adj, kind = _structure(n, groups, (), True)
+    colour = _refine(adj, dict(kind))
+    same = [[w for w in range(n) if colour[w] == colour[v]] for v in range(n)]
+    group_set = set(groups)
+    closing = [[g for g in groups if max(g) == v] for v in range(n)]
+    image, used, out = [0] * n, [False] * n, []
+
+    def extend(v):
+        if v == n:
+            out.append(tuple(image))
+            return
+        for w in same[v]:
+            if used[w]:
+                continue
+            image[v] = w
+            if all(frozenset(image[u] for u in g) in group_set for g in closing[v]):
+                used[w] = True
+                extend(v + 1)
+                used[w] = False
+
+    extend(0)
+    return tuple(out)
 
 
 def _candidates(n: int, groups) -> list[tuple]:

@@ -123,11 +123,10 @@ def _to_mechanism(sk: _chains.Skeleton, n: int, dof: int, k: int, frac: bool) ->
 
 
 @functools.cache
-def _mechanisms(n: int, dof: int) -> tuple:
-    return tuple(
-        (_to_mechanism(sk, n, dof, k, frac), frac, kin)
-        for k, (sk, frac, kin) in enumerate(_catalogue(n, dof), start=1)
-    )
+def _mechanism(n: int, dof: int, k: int) -> Mechanism:
+    """Chain ``GKC n-dof-k``: row ``k - 1`` of the catalogue as a Mechanism (built when first asked for)."""
+    sk, frac, _ = _catalogue(n, dof)[k - 1]
+    return _to_mechanism(sk, n, dof, k, frac)
 
 
 def geared_chains(n_links: int, dof: int = 1, *, fractionated=False, level: str = "coaxial") -> tuple[Mechanism, ...]:
@@ -164,17 +163,23 @@ def geared_chains(n_links: int, dof: int = 1, *, fractionated=False, level: str 
 
 
 @functools.cache
-def _select(n: int, f: int, fractionated, level: str) -> tuple:
+def _kept(n: int, f: int, fractionated, level: str) -> tuple[int, ...]:
+    """The numbers ``k`` of the chains ``GKC n-f-k`` that :func:`geared_chains` gives."""
     out, seen = [], set()
-    for mech, frac, kin in _mechanisms(n, f):
+    for k, (_, frac, kin) in enumerate(_catalogue(n, f), start=1):
         if (fractionated is False and frac) or (fractionated == "only" and not frac):
             continue
         if level == "kinematic":
             if kin in seen:
                 continue
             seen.add(kin)
-        out.append(mech)
+        out.append(k)
     return tuple(out)
+
+
+@functools.cache
+def _select(n: int, f: int, fractionated, level: str) -> tuple:
+    return tuple(_mechanism(n, f, k) for k in _kept(n, f, fractionated, level))
 
 
 # ---------------------------------------------------------------- structure of a given mechanism
@@ -361,6 +366,6 @@ def count_table(max_links: int = 7) -> tuple[CountRow, ...]:
     for pub in PUBLISHED_COUNTS:
         if pub.links > max_links:
             continue
-        found = len(geared_chains(pub.links, pub.dof, level=pub.level))
+        found = len(_kept(pub.links, pub.dof, False, pub.level))  # counted, not built as Mechanisms
         rows.append(CountRow(pub.links, pub.dof, pub.level, found, pub.count, pub.source, pub.note))
     return tuple(rows)

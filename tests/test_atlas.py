@@ -18,7 +18,7 @@ import pytest
 import sympy
 
 import gearlib as gl
-from gearlib import atlas
+from gearlib import _chains, atlas
 
 
 # --------------------------------------------------------------------- published counts
@@ -126,6 +126,22 @@ def test_chains_are_pairwise_non_isomorphic():
                 assert not atlas.isomorphic(graphs[i], graphs[j]), (chains[i].name, chains[j].name)
 
 
+@pytest.mark.parametrize("links", [3, 4, 5, 6, 7])
+def test_hypertree_automorphisms_are_networkx_isomorphisms(links):
+    """The enumeration's orbit pruning uses each hypertree's automorphisms: compare them with
+    every colour-preserving self-isomorphism networkx's VF2 finds on the same tree."""
+    from networkx.algorithms.isomorphism import GraphMatcher
+
+    trees = _chains._hypertrees(links)
+    assert trees and any(len(autos) > 1 for _, autos in trees)
+    for groups, autos in trees:
+        tree = nx.Graph((("l", v), ("g", i)) for i, g in enumerate(groups) for v in g)
+        nx.set_node_attributes(tree, {node: node[0] for node in tree}, "kind")  # link or group
+        matcher = GraphMatcher(tree, tree, node_match=lambda x, y: x["kind"] == y["kind"])
+        vf2 = {tuple(m[("l", v)][1] for v in range(links)) for m in matcher.isomorphisms_iter()}
+        assert sorted(autos) == sorted(vf2), groups
+
+
 def _brute_force(n, dof):
     """Independent enumeration: every labelled coaxial arrangement and every choice of gear
     pairs, validated by gl.Mechanism, filtered with numpy, deduplicated with networkx."""
@@ -179,8 +195,10 @@ def test_results_are_cached_and_deterministic():
     assert all(a is b for a, b in zip(atlas.geared_chains(6, 2), atlas.geared_chains(6, 2), strict=True))
     first = [m.to_dict() for m in atlas.geared_chains(5, 1)]
     atlas._select.cache_clear()
-    atlas._mechanisms.cache_clear()
+    atlas._mechanism.cache_clear()
+    atlas._kept.cache_clear()
     atlas._catalogue.cache_clear()
+    _chains._hypertrees.cache_clear()
     assert [m.to_dict() for m in atlas.geared_chains(5, 1)] == first
 
 
