@@ -249,12 +249,19 @@ class Page:
             raise CDPError(f"JavaScript failed: {d.get('exception', {}).get('description') or d.get('text')}")
         return answer["result"].get("value")
 
-    def screenshot(self, path: str, clip: dict | None = None):
-        """Save a PNG of the viewport (or of ``clip``: x, y, width, height in CSS pixels)."""
+    def screenshot(self, path: str, clip: dict | None = None, *, below: int = 0):
+        """Save a PNG of the viewport, or of ``clip`` (x, y, width, height in CSS pixels of the
+        document): the page is scrolled to put the region ``below`` pixels under the top of
+        the viewport (say, under a sticky header), and the region is cut to the viewport.
+        (Chromium's captureBeyondViewport would lay the whole page out again at its full
+        height: seconds a shot on a long page.)"""
         params = {"format": "png"}
         if clip:
-            params["clip"] = {**clip, "scale": 1}
-            params["captureBeyondViewport"] = True
+            self.evaluate(f"window.scrollTo(0, {max(0.0, clip['y'] - below)})")
+            scroll, height = self.evaluate("[window.scrollY, window.innerHeight]")
+            top = max(clip["y"], scroll)
+            params["clip"] = {**clip, "y": top, "height": max(1, min(clip["height"], scroll + height - top)),
+                              "scale": 1}
         data = self.send("Page.captureScreenshot", params)["data"]
         with open(path, "wb") as f:
             f.write(base64.b64decode(data))

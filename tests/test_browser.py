@@ -37,6 +37,7 @@ SHOTS = HTML.parent / "screenshots"
 LOCAL_SCHEMES = {"file", "data", "blob", "about"}
 REFRESH = re.compile(r'<meta http-equiv="Refresh" content="0; url=([^"]+)"', re.IGNORECASE)
 WIDTH, HEIGHT = 1280, 900
+HEADER = 60  # the book's sticky header bar, in CSS pixels: screenshots of a region go below it
 
 
 def built_pages() -> list[str]:
@@ -197,7 +198,7 @@ def test_page_reads_offline(page, name):
         page.screenshot(str(SHOTS / f"{stem}.png"))
         for part in ("Widget", "Equation", "Figure"):
             if seen[f"first{part}"]:
-                page.screenshot(str(SHOTS / f"{stem}--{part.lower()}.png"), clip=seen[f"first{part}"])
+                page.screenshot(str(SHOTS / f"{stem}--{part.lower()}.png"), clip=seen[f"first{part}"], below=HEADER)
     assert not problems, f"{name} ({seen['title']}):\n  " + "\n  ".join(problems)
 
 
