@@ -37,5 +37,27 @@ def _declare_multitoc_parallel_safe():
 
 _declare_multitoc_parallel_safe()
 
+
+def _one_page_per_chunk(source_dir: str):
+    """Sphinx hands each worker a fixed chunk of pages in name order (26 pages: chunks of 11,
+    11 and 4), which put every chapter in one chunk: one worker ran the chapters' notebooks
+    one after another while the other sat idle for most of the build. One page per chunk,
+    the largest sources first (a longest-first schedule), keeps both workers busy."""
+    import pathlib
+
+    import sphinx.builders
+
+    root = pathlib.Path(source_dir)
+
+    def size(docname: str) -> int:
+        return max((p.stat().st_size for p in root.glob(f"{docname}.*") if p.is_file()), default=0)
+
+    def make_chunks(arguments, nproc, maxbatch=10):
+        return [[doc] for doc in sorted(arguments, key=size, reverse=True)]
+
+    sphinx.builders.make_chunks = make_chunks
+
+
 if __name__ == "__main__":
+    _one_page_per_chunk(sys.argv[1] if len(sys.argv) > 1 else ".")
     sys.exit(main(["build", *sys.argv[1:]]))
