@@ -133,11 +133,11 @@ def _hypertrees(n: int) -> tuple:
             colour = nx.bipartite.color(tree)
             for side in (0, 1):
                 links = sorted(v for v in tree if colour[v] == side)
-                groups = [v for v in tree if colour[v] != side]
-                if len(links) != n or any(tree.degree(g) < 2 for g in groups):
+                group_nodes = [v for v in tree if colour[v] != side]
+                if len(links) != n or any(tree.degree(g) < 2 for g in group_nodes):
                     continue
                 idx = {v: i for i, v in enumerate(links)}
-                groups = tuple(frozenset(idx[v] for v in tree[g]) for g in groups)
+                groups = tuple(frozenset(idx[v] for v in tree[g]) for g in group_nodes)
                 out.append((groups, automorphisms(n, groups)))
     return tuple(out)
 

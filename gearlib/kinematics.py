@@ -654,9 +654,7 @@ def _repeat_numeric(mech, ground, inputs):
     """The solution of :func:`speeds` for one real input on a small mechanism already solved
     with the same ground and input link (see :func:`_remember_numeric`), or None."""
     fast = mech.__dict__.get("_speed_repeat")
-    if not fast:
-        return None
-    if len(inputs) != 1:
+    if not fast or len(inputs) != 1:
         return None
     entry = fast.get(_repeat_key(ground, inputs))
     if entry is None:
@@ -733,7 +731,9 @@ def speeds(mech: Mechanism, ground=None, inputs=None, *, method: str = "exact", 
     ...
     gearlib.errors.InputError: 'car differential' has 2 degrees of freedom with link 1 grounded, so it needs 2 inputs; got 1 (3)
     """
-    if method == "numeric" and type(inputs) is dict and not held and not joined:
+    # a plain {link: number} numeric solve: a repeat of an earlier one may skip validation
+    repeatable = method == "numeric" and type(inputs) is dict and not held and not joined
+    if repeatable:
         sol = _repeat_numeric(mech, ground, inputs)
         if sol is not None:
             return sol
@@ -741,7 +741,7 @@ def speeds(mech: Mechanism, ground=None, inputs=None, *, method: str = "exact", 
         raise DataFormatError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
     cons = Constraints.build(mech, ground, inputs, held, joined, symbolic_inputs=(method == "symbolic"))
     values, dof = _SOLVERS[method](mech, cons)
-    if method == "numeric" and type(inputs) is dict and not held and not joined:
+    if repeatable:
         _remember_numeric(mech, ground, inputs, cons)
     if method == "exact" and values and isinstance(values[0], sympy.Basic):
         values = [v if to_fraction(v) is None else to_fraction(v) for v in values]
