@@ -117,8 +117,8 @@ browser: $(STAMP) chromium
 # The book build executes every notebook in a fresh kernel and fails on any error (as nbval
 # did here before; tests/test_repo.py checks that every notebook is in the book), so make
 # test does not run them twice; `make notebooks` runs them under nbval alone.
-# The unit tests run beside the book build, which leaves a core idle for a third of its
-# time (Sphinx's serial steps); -O prints each one's output whole when it ends.
+# The unit tests run beside the book build, which leaves a core idle part of its time
+# (kernel start-ups, Sphinx's serial steps); -O prints each one's output whole when it ends.
 test: lint
 	$(MAKE) --no-print-directory -j2 -O unit build-book
 	$(MAKE) --no-print-directory browser

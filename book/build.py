@@ -1,8 +1,8 @@
 """``jupyter-book build`` with Sphinx reading the pages in parallel (used by ``make book``).
 
 Jupyter Book 1's command line has no ``-j`` option, but its Sphinx call takes ``jobs``. Reading
-a page executes its notebook, so with two worker processes the notebooks run two at a time
-and the build takes about half as long on a two-core machine. The arguments are those of
+a page executes its notebook, so with two worker processes the notebooks run two at a time,
+each worker taking the next page when it is done, largest first. The arguments are those of
 ``jupyter-book build``; the number of workers comes from ``JB_JOBS`` (default: the number
 of CPUs, at most 4; ``JB_JOBS=1`` builds serially).
 
@@ -39,10 +39,12 @@ _declare_multitoc_parallel_safe()
 
 
 def _one_page_per_chunk(source_dir: str):
-    """Sphinx hands each worker a fixed chunk of pages in name order (26 pages: chunks of 11,
-    11 and 4), which put every chapter in one chunk: one worker ran the chapters' notebooks
-    one after another while the other sat idle for most of the build. One page per chunk,
-    the largest sources first (a longest-first schedule), keeps both workers busy."""
+    """Sphinx hands each worker a fixed chunk of pages in name order (for 26 pages on two
+    workers: chunks of 11, 11 and 4), which put every chapter in one chunk: one worker ran
+    the chapters' notebooks one after another while the other sat idle for most of the
+    build. One page per chunk, the largest sources first (a longest-first schedule), keeps
+    both workers busy. Sphinx cuts the pages it writes with the same function; writing a
+    page is quick, so the one-page chunks cost a few process starts there."""
     import pathlib
 
     import sphinx.builders
