@@ -19,7 +19,7 @@ from urllib.parse import unquote, urlsplit
 import pytest
 import yaml
 
-from notebook_tools import ROOT
+from notebook_tools import ROOT, notebooks
 
 HTML = pathlib.Path(os.environ.get("BOOK_HTML", ROOT / "book" / "_build" / "html")).resolve()
 book = pytest.mark.book
@@ -235,6 +235,33 @@ def test_pages_with_widgets_embed_their_state_and_load_the_local_manager(pages):
         for local in ("requirejs/require.js", "gearlib-widgets.js", "html-manager/embed-amd.js"):
             assert any(f"_static/{local}" in url for url in scripts), f"{_rel(path)} does not load {local}"
     assert found, "no page of the book shows a widget (the introduction has one)"
+
+
+# gearlib's drawing vocabulary (draw_*, plot*, a result's .plot()) and matplotlib's subplots
+DRAWS = re.compile(r"\b(?:draw_\w*|plot\w*|subplots)\s*\(")
+IMAGE_IN_OUTPUT = re.compile(r'<div class="cell_output[^"]*">(?:(?!<div class="cell[ "]).)*?<img ', re.S)
+
+
+def _code_cells(path: pathlib.Path) -> list[dict]:
+    return [c for c in json.loads(path.read_text(encoding="utf-8"))["cells"] if c["cell_type"] == "code"]
+
+
+@book
+@pytest.mark.parametrize("notebook", [str(p.relative_to(ROOT)) for p in notebooks()])
+def test_every_cell_that_draws_shows_its_figure_in_the_book(notebook):
+    """A cell that calls a drawing function shows a figure on its page. (A kernel that inherits
+    MPLBACKEND=Agg draws nowhere: the book would build, every figure missing.)"""
+    source = ROOT / notebook
+    executed = HTML.parent / "jupyter_execute" / notebook
+    assert executed.is_file(), f"the build did not keep the executed {notebook} in {executed.parent}"
+    drawing = [i for i, c in enumerate(_code_cells(source)) if DRAWS.search("".join(c["source"]))]
+    cells = _code_cells(executed)
+    blank = [i + 1 for i in drawing
+             if not any(k.startswith("image/") for o in cells[i].get("outputs", []) for k in o.get("data", {}))]
+    assert not blank, f"{notebook}: code cells {blank} draw but show no figure (is MPLBACKEND set for the kernel?)"
+    page = (HTML / notebook).with_suffix(".html").read_text(encoding="utf-8")
+    shown = len(IMAGE_IN_OUTPUT.findall(page))
+    assert shown >= len(drawing), f"{notebook}: {len(drawing)} cells draw, {shown} cell outputs on its page show an image"
 
 
 def test_jupyterlab_has_the_widgets_extension_enabled():
