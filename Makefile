@@ -26,7 +26,7 @@ VENDOR := book/vendor
 VENDOR_STAMP := $(VENDOR)/_static/.staged
 CHROMIUM ?= $(shell command -v chromium || command -v chromium-browser || true)
 
-.PHONY: help venv vendor lint unit notebooks book build-book browser chromium test lab bench nbval-repeat strip clean
+.PHONY: help venv vendor lint unit notebooks book build-book browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean
 
 help:
 	@echo "make book     build the HTML book into book/_build/html (creates .venv if needed)"
@@ -109,21 +109,31 @@ chromium:
 		fi; \
 	fi
 
-# Headless Chromium: every page of the built book from disk with the network off, then
-# each chapter with a widget run in JupyterLab (make lab's server, on 127.0.0.1) with its
-# widgets moved. After build-book; screenshots go to book/_build/screenshots.
-browser: $(STAMP) chromium
+# Headless Chromium: every page of the built book from disk with the network off
+# (browser-pages, after build-book), and each chapter run in JupyterLab (make lab's server,
+# on 127.0.0.1) with its widgets moved (browser-lab, needs no build). Screenshots go to
+# book/_build/screenshots.
+browser: browser-pages browser-lab
+
+browser-pages: $(STAMP) chromium
 	@test -f book/_build/html/index.html || { echo "no built book: run make book first"; exit 1; }
-	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --dist loadgroup --durations=5 tests/test_browser.py tests/test_lab.py
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_browser.py
+
+browser-lab: $(STAMP) chromium
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_lab.py
+
+book-then-pages: build-book
+	$(MAKE) --no-print-directory browser-pages
 
 # The book build executes every notebook in a fresh kernel and fails on any error (as nbval
 # did here before; tests/test_repo.py checks that every notebook is in the book), so make
 # test does not run them twice; `make notebooks` runs them under nbval alone.
-# The unit tests run beside the book build, which leaves a core idle part of its time
-# (kernel start-ups, Sphinx's serial steps); -O prints each one's output whole when it ends.
+# Three chains side by side on two cores, so that none leaves a core idle (kernel
+# start-ups, Sphinx's serial steps, a browser waiting for a kernel): the unit tests, the
+# chapters in JupyterLab, and the book build followed by its pages in Chromium. -O prints
+# each one's output whole when it ends.
 test: lint
-	$(MAKE) --no-print-directory -j2 -O unit build-book
-	$(MAKE) --no-print-directory browser
+	$(MAKE) --no-print-directory -j3 -O unit browser-lab book-then-pages
 
 # JupyterLab (root must say so) at the book's start, with ipywidgets' extension for live widgets
 lab: $(STAMP)

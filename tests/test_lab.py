@@ -2,11 +2,12 @@
 
 A JupyterLab server of the project's environment (the one ``make lab`` starts) serves a
 copy of ``chapters/`` from a temporary folder (so nothing in the working tree is ever
-saved over), on 127.0.0.1 only. Headless Chromium opens each chapter that shows a widget,
-runs every cell (*Run > Run All Cells*) and checks that no cell raises, that every widget
-renders, and that moving a widget's first slider makes the kernel redraw its figure. It
-fails on a request to any other host. Skipped (with the reason) only where Chromium is
-missing. Run by ``make browser``, part of ``make test``.
+saved over), on 127.0.0.1 only. Headless Chromium opens each chapter, runs every cell
+(*Run > Run All Cells*) and checks that no cell raises, that every widget renders, and
+that moving a widget's first slider makes the kernel redraw its figure. It fails on a
+request to any other host. Skipped (with the reason) only where Chromium is missing. Run
+by ``make browser``; ``make test`` runs it beside the unit tests and the book build (it
+needs no built book).
 """
 
 from __future__ import annotations
@@ -30,21 +31,19 @@ import pytest
 from chromium import Chromium, find_chromium
 from notebook_tools import ROOT
 
-# one worker runs every chapter (one JupyterLab server; under `--dist loadgroup`)
-pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("jupyterlab")]
+pytestmark = pytest.mark.browser
 
-HTML = pathlib.Path(os.environ.get("BOOK_HTML", ROOT / "book" / "_build" / "html")).resolve()
-SHOTS = HTML.parent / "screenshots"
+# beside the book's other screenshots; made when a shot is taken (a book build that starts
+# at the same time removes book/_build first)
+SHOTS = pathlib.Path(os.environ.get("BOOK_HTML", ROOT / "book" / "_build" / "html")).resolve().parent / "screenshots"
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 
 
-def chapters_with_widgets() -> list[str]:
-    """Chapters whose built page shows a widget; every chapter when the book is not built."""
-    chapters = sorted(p.name for p in (ROOT / "chapters").glob("*.ipynb"))
-    built = [c for c in chapters if (HTML / "chapters" / c).with_suffix(".html").is_file()]
-    if len(built) < len(chapters):
-        return chapters
-    return [c for c in chapters if WIDGET_VIEW in (HTML / "chapters" / c).with_suffix(".html").read_text("utf-8")]
+def chapters() -> list[str]:
+    """Every chapter, the largest first: each worker takes the next when it is done, so the
+    long ones do not come last (a longest-first schedule)."""
+    paths = sorted((ROOT / "chapters").glob("*.ipynb"), key=lambda p: (-p.stat().st_size, p.name))
+    return [p.name for p in paths]
 
 
 def _free_port() -> int:
@@ -61,7 +60,6 @@ def lab():
         pytest.skip("Chromium not found ($CHROMIUM, chromium, chromium-browser): install Debian's "
                     "chromium (`apt-get install chromium`; `make test` does it where it can) "
                     "to run the chapters in JupyterLab in a real browser")
-    SHOTS.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="book-lab-") as tmp:
         tmp = pathlib.Path(tmp)
         shutil.copytree(ROOT / "chapters", tmp / "root" / "chapters",
@@ -164,7 +162,7 @@ def _cell(index: int) -> str:
     return f"{NOTEBOOK}.content.widgets.filter(c => c.model.type === 'code')[{index}].node"
 
 
-@pytest.mark.parametrize("chapter", chapters_with_widgets())
+@pytest.mark.parametrize("chapter", chapters())
 def test_chapter_runs_in_jupyterlab_with_live_widgets(lab, chapter):
     base, token, page = lab
     page.goto(f"{base}/lab/tree/chapters/{chapter}?token={token}&reset", timeout=60)
@@ -208,6 +206,7 @@ def _run_and_check(page, chapter):
     stem = re.sub(r"[^\w.-]+", "_", chapter.removesuffix(".ipynb"))
     if seen["widgets"]:
         page.evaluate(f"{_cell(seen['widgets'][0]['cell'])}.scrollIntoView()")
+    SHOTS.mkdir(parents=True, exist_ok=True)
     page.screenshot(str(SHOTS / f"lab_{stem}.png"))
 
     remote = sorted({u for u in page.requests
