@@ -20,7 +20,6 @@ Times are wall-clock and depend on the machine; nothing here is a test.
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import math
 import time
@@ -102,11 +101,16 @@ def _uncached(mech: Mechanism) -> Mechanism:
     """A copy of *mech* with nothing computed cached on it or on its gear pairs (propagation
     caches its plan on the mechanism), without validating it again as building a new one
     would: repeated timings then cost what one run costs, not a rebuild of the train."""
+    keep_of: dict = {}  # class -> the attributes a fresh object has
+
     def strip(obj):
-        new = copy.copy(obj)
-        keep = {f.name for f in dataclasses.fields(obj)} | {"_groups"}  # _groups: set by validation
-        for key in [k for k in new.__dict__ if k not in keep]:
-            del new.__dict__[key]
+        cls = type(obj)
+        keep = keep_of.get(cls)
+        if keep is None:  # the fields, and _groups, which validation sets
+            keep = keep_of[cls] = tuple(f.name for f in dataclasses.fields(cls)) + ("_groups",)
+        new = object.__new__(cls)
+        old = obj.__dict__
+        new.__dict__.update({k: old[k] for k in keep if k in old})
         return new
 
     new = strip(mech)
