@@ -101,3 +101,21 @@ def test_checks_never_crash_and_stubs_fail(name):
         result = check(junk)
         assert not result.passed, (name, junk)
         assert isinstance(result.message, str) and result.message
+
+
+def test_a_check_computes_its_answer_once_and_keeps_it_intact():
+    calls = []
+
+    def compute():
+        calls.append(1)
+        return sympy.Matrix([[1, 2], [3, 4]])
+
+    check = gl.check.Check("counting", compute)
+    assert not check([[1, 2], [3, 5]]).passed
+    assert check([[1, 2], [3, 4]]).passed
+    assert check(np.array([[1, 2], [3, 4]])).passed
+    assert len(calls) == 1, "the expected value was computed again for each answer"
+    kept = check._expected()
+    with pytest.raises(TypeError):
+        kept[0, 0] = 7  # what the check compares with cannot be changed from outside
+    assert check([[1, 2], [3, 4]]).passed

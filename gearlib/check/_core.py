@@ -161,10 +161,24 @@ class Check:
     generic_hint: str = "Go back to the Willis equation of each gear pair and write it out step by step."
     standard_hints: bool = True
     accept: Callable | None = field(default=None, compare=False)
+    _memo: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def expected(self):
         return self.compute()
+
+    def _expected(self):
+        """``compute()``, computed once per check: a reader who tries again, or a page of
+        checks, does not redo the work (some enumerate an atlas). Matrices are kept immutable
+        so that nothing the check hands out can change it."""
+        if "value" not in self._memo:
+            value = self.compute()
+            if isinstance(value, sympy.MatrixBase):
+                value = sympy.ImmutableMatrix(value)
+            else:
+                value = sympy.sympify(value)
+            self._memo["value"] = value
+        return self._memo["value"]
 
     def __call__(self, answer) -> CheckResult:
         try:
@@ -181,9 +195,7 @@ class Check:
             value = as_value(answer)
         except _Unreadable as err:
             return CheckResult(False, str(err)[0].upper() + str(err)[1:] + ".", self.name)
-        expected = self.compute()
-        if not isinstance(expected, sympy.MatrixBase):
-            expected = sympy.sympify(expected)
+        expected = self._expected()
         if isinstance(expected, sympy.MatrixBase) != isinstance(value, sympy.MatrixBase):
             shape = "a matrix or list" if isinstance(expected, sympy.MatrixBase) else "a single value"
             return CheckResult(False, f"This question asks for {shape}.", self.name)
