@@ -33,7 +33,7 @@ help:
 	@echo "make test     lint, unit and doc tests, book build (runs every notebook), browser test"
 	@echo "make notebooks  every notebook under nbval (quicker than a book build when writing one)"
 	@echo "make lab      open JupyterLab at the book's start"
-	@echo "make browser  open every page of the built book in headless Chromium, offline"
+	@echo "make browser  every page of the built book in headless Chromium, offline, and every chapter in JupyterLab"
 	@echo "make bench    speed benchmarks (benchmarks/)"
 	@echo "make nbval-repeat  run every notebook three times; fail if an output changes"
 	@echo "make strip    remove outputs from every notebook before committing"
