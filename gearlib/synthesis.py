@@ -115,8 +115,12 @@ def _eliminate(mech: Mechanism, ground, terminals) -> tuple[list, object]:
     rows = [{j: v for j, v in r.items() if j != g} for r in full]  # the ground's speed is 0
     cols = tuple(x for x in mech.link_ids if x != ground)
     where = {x: mech.index[x] for x in cols}
-    for x in (x for x in cols if x not in terminals):  # eliminate the non-terminal speeds
-        j = where[x]
+    # eliminate the non-terminal speeds, each time the one in the fewest rows (least fill-in,
+    # so the smallest fractions: Markowitz's rule)
+    left = [where[x] for x in cols if x not in terminals]
+    while left:
+        j = min(left, key=lambda c: (sum(c in r for r in rows), left.index(c)))
+        left.remove(j)
         having = [r for r in rows if j in r]
         if not having:
             continue
