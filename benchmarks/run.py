@@ -11,6 +11,7 @@ pass/fail test: the table is for people; keep timing out of the test suite.
 
 from __future__ import annotations
 
+import gc
 import subprocess
 import sys
 import time
@@ -320,6 +321,9 @@ def _widget_row(name, ex, updates):
     background had to be redrawn costs more than one that reuses it, so the mean, not the
     best frame, is compared with the target; the slowest frame is printed too."""
     ex.update(**updates[-1])
+    # from a collected heap: the figures of the widgets timed before this one are garbage in
+    # reference cycles, which a full collection would otherwise sweep during one of these frames
+    gc.collect()
     canvas = getattr(ex, "_canvas", None)
     redrawn = canvas.backgrounds_drawn if canvas is not None else 0
     times = []
