@@ -14,6 +14,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
+import textwrap
 
 import numpy as np
 
@@ -155,17 +156,20 @@ def plot_speeds(solution, ax=None, *, links=None, title=None):
     values = np.array([complex(solution.as_complex()[mech.index[x]]) for x in links])
     is_complex = np.any(np.abs(values.imag) > 1e-12 * np.maximum(1.0, np.abs(values)))
     heights = np.abs(values) if is_complex else values.real
-    names = [f"{x}\n{mech.link(x).name}" if mech.link(x).name else str(x) for x in links]
+    # names wrapped to the width of a bar slot (about 70 characters across at this size)
+    width = max(8, 70 // max(1, len(links)))
+    names = [f"{x}\n{textwrap.fill(mech.link(x).name, width)}" if mech.link(x).name else str(x) for x in links]
     colors = ["0.6" if x == solution.constraints.ground else "tab:blue" for x in links]
     bars = ax.bar(range(len(links)), heights, color=colors)
     ax.set_xticks(range(len(links)), names, fontsize=8)
     ax.axhline(0, color="black", linewidth=0.8)
     ax.set_ylabel("|ω|" if is_complex else "ω")
     for bar, z, h in zip(bars, values, heights):
-        text = f"{h:.3g}" if not is_complex else f"{abs(z):.3g}∠{np.angle(z):.2f}"
+        text = f"{h:.3g}" if not is_complex else f"{abs(z):.3g}\n∠{np.angle(z):.2f}"
         ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
                     va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
                     textcoords="offset points")
+    ax.margins(y=0.2 if is_complex else 0.12)  # room for the value labels under the title
     ax.set_title(title if title is not None else f"speeds, link {solution.constraints.ground} fixed")
     return ax
 

@@ -358,3 +358,20 @@ def test_cli_errors_are_one_line(tmp_path, extra, text):
     assert status == 2
     assert "Traceback" not in err and text in err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_speed_bars_keep_their_labels_apart(car):
+    """Seven links with long names and complex speeds: no two tick labels, and no two value
+    labels, overlap (drawn at the size plot_speeds chooses)."""
+    ax = gl.speeds(car, ground=1, inputs={3: 26, 4: 30}).plot()
+    fig = ax.figure
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for texts in (ax.get_xticklabels(), ax.texts):
+        boxes = sorted((t.get_window_extent(renderer) for t in texts if t.get_text()), key=lambda b: b.x0)
+        assert len(boxes) == 7
+        clashes = [(a.x1, b.x0) for a, b in zip(boxes, boxes[1:]) if a.x1 > b.x0]
+        assert not clashes, f"labels overlap: {clashes}"
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
