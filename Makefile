@@ -87,8 +87,10 @@ notebooks: $(STAMP)
 # checked: every local link and anchor resolves, nothing loads from another host.
 # book/build.py is `jupyter-book build` with Sphinx reading (so executing) pages in
 # parallel, one worker per CPU (JB_JOBS=1 for a serial build).
+# A clean build removes everything in book/_build but the screenshots, which the JupyterLab
+# test may be writing meanwhile (make test).
 build-book: $(STAMP) $(VENDOR_STAMP)
-	rm -rf book/_build
+	mkdir -p book/_build && find book/_build -mindepth 1 -maxdepth 1 ! -name screenshots -exec rm -rf {} +
 	$(BIN)/python book/build.py . $(JB_FLAGS)
 	@test -f book/_build/html/index.html
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py

@@ -33,8 +33,8 @@ from notebook_tools import ROOT
 
 pytestmark = pytest.mark.browser
 
-# beside the book's other screenshots; made when a shot is taken (a book build that starts
-# at the same time removes book/_build first)
+# beside the book's other screenshots (a book build keeps this folder); made when a shot is
+# taken, as the build may start at the same time on a fresh checkout
 SHOTS = pathlib.Path(os.environ.get("BOOK_HTML", ROOT / "book" / "_build" / "html")).resolve().parent / "screenshots"
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 
