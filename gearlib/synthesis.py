@@ -116,10 +116,10 @@ def _eliminate(mech: Mechanism, ground, terminals) -> tuple[list, object]:
     cols = tuple(x for x in mech.link_ids if x != ground)
     where = {x: mech.index[x] for x in cols}
     # eliminate the non-terminal speeds, each time the one in the fewest rows (least fill-in,
-    # so the smallest fractions: Markowitz's rule)
+    # so the smallest fractions: Markowitz's rule); min keeps the first of equals, in link order
     left = [where[x] for x in cols if x not in terminals]
     while left:
-        j = min(left, key=lambda c: (sum(c in r for r in rows), left.index(c)))
+        j = min(left, key=lambda c: sum(c in r for r in rows))
         left.remove(j)
         having = [r for r in rows if j in r]
         if not having:
