@@ -18,7 +18,7 @@ import pytest
 import sympy
 
 import gearlib as gl
-from gearlib import _chains, atlas
+from gearlib.synthesis import _chains, atlas
 
 
 # --------------------------------------------------------------------- published counts

@@ -9,7 +9,7 @@ from sympy import ZZ
 from sympy.polys.rings import ring
 
 import gearlib as gl
-from gearlib._multilinear import factor_list
+from gearlib._common.multilinear import factor_list
 
 R, *X = ring("a b c d e f g h", ZZ)
 

@@ -9,7 +9,7 @@ import pytest
 import sympy
 
 import gearlib as gl
-from gearlib.robots import UNIT_TYPES
+from gearlib.gains.robots import UNIT_TYPES
 
 S = sympy.Symbol
 th1, th2, th3 = sympy.symbols("theta_1 theta_2 theta_3")

@@ -7,7 +7,7 @@ import matplotlib
 import pytest
 
 import gearlib as gl
-from gearlib.scaling import ScalingCurve, dense_nullspace_ratio
+from gearlib.gains.scaling import ScalingCurve, dense_nullspace_ratio
 
 matplotlib.use("Agg")
 
@@ -57,7 +57,7 @@ def test_scaling_checks_its_arguments_and_plots():
 
 
 def test_propagation_leaves_the_garbage_collector_as_it_found_it():
-    """plan() and the evaluation pause the cyclic collector (gearlib._nogc); the state comes
+    """plan() and the evaluation pause the cyclic collector (gearlib._common.nogc); the state comes
     back as it was, also when the call raises, and a collector the caller disabled stays off."""
     import gc
 
@@ -77,11 +77,11 @@ def test_propagation_leaves_the_garbage_collector_as_it_found_it():
 
 
 def test_uncached_copies_keep_nothing_an_earlier_run_computed():
-    """The scaling curves time propagation on copies of one train (gearlib.scaling._uncached):
+    """The scaling curves time propagation on copies of one train (gearlib.gains.scaling._uncached):
     a copy must carry none of the caches a run leaves behind, and give the same ratio."""
     import dataclasses
 
-    from gearlib.scaling import _uncached
+    from gearlib.gains.scaling import _uncached
 
     train = gl.serial_train(6)
     fresh_keys = set(train.__dict__)

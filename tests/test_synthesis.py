@@ -12,7 +12,7 @@ import pytest
 import sympy
 
 import gearlib as gl
-from gearlib import synthesis
+from gearlib.synthesis import dgm as synthesis
 
 e = sympy.Symbol
 

@@ -7,7 +7,7 @@ import pytest
 
 import gearlib as gl
 from gearlib.davies import efficiency_explorer
-from gearlib.widgets import Canvas
+from gearlib.mechanism.widgets import Canvas
 
 matplotlib.use("Agg")
 PNG = b"\x89PNG"
@@ -30,7 +30,7 @@ def test_unit_explorer_names_the_units():
 
 def test_transmission_explorer_gives_the_gear_ratio():
     mech = gl.catalog.load("liu_chen_transmission")
-    ex = gl.unit_widgets.transmission_explorer(mech, gl.transmission.LIU_CHEN_MODES)
+    ex = gl.gains.transmission_explorer(mech, gl.transmission.LIU_CHEN_MODES)
     table = gl.shift_table(mech, gl.transmission.LIU_CHEN_MODES)
     for row in table.rows:
         png = ex.update(mode=row.mode.name)
@@ -82,7 +82,7 @@ def _explorers():
     return [
         gl.widgets.speed_explorer(gl.catalog.simple_planetary(), ground=3, inputs={1: 1}),
         gl.unit_explorer(),
-        gl.unit_widgets.transmission_explorer(mech, gl.transmission.LIU_CHEN_MODES),
+        gl.gains.transmission_explorer(mech, gl.transmission.LIU_CHEN_MODES),
         gl.cornering_explorer(),
         efficiency_explorer(gl.catalog.load("laus_epicyclic"), 1, 5, 2),
     ]
@@ -118,7 +118,7 @@ def _pixels(png):
 def test_encode_png_is_read_back_by_pillow():
     import numpy as np
 
-    from gearlib.widgets import encode_png
+    from gearlib.mechanism.widgets import encode_png
 
     rgba = np.random.default_rng(5).integers(0, 256, size=(37, 53, 4), dtype=np.uint8)
     assert (_pixels(encode_png(rgba)) == rgba).all()
@@ -128,7 +128,7 @@ def _sweeps():
     """Each widget with a sequence of states that moves limits, titles, tick labels and legends."""
     k = "N_1_in_1_2"
     laus = gl.catalog.load("laus_epicyclic")
-    gears = gl.unit_widgets.transmission_explorer(gl.catalog.load("liu_chen_transmission"),
+    gears = gl.gains.transmission_explorer(gl.catalog.load("liu_chen_transmission"),
                                                   gl.transmission.LIU_CHEN_MODES)
     return {
         "speed": (gl.widgets.speed_explorer(gl.catalog.simple_planetary(), ground=3, inputs={1: 1}),

@@ -17,8 +17,8 @@ import functools
 import pathlib
 
 from ..errors import DataFormatError, ToothNumberError, UnknownLinkError
-from ..io import load as _load_file
-from ..mechanism import Mechanism
+from ..mechanism.io import load as _load_file
+from ..mechanism.data import Mechanism
 
 __all__ = [
     "names",

@@ -60,7 +60,7 @@ class _Unreadable(Exception):
 
 def as_value(answer):
     """Turn an answer into a sympy object (number, expression, Matrix) for comparison."""
-    from .._parse import parse_expr
+    from .._common.parse import parse_expr
 
     if answer is None:
         raise _Unreadable("no answer yet: replace `None` with your answer")

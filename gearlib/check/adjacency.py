@@ -6,9 +6,9 @@ contact angle) carries the planet on the carrier's pin: inner ring on 4, outer r
 """
 
 from .. import catalog
-from ..adjacency import speed_ratio_matrix
-from ..frequencies import frequency_table
-from ..mechanism import Bearing
+from ..adjacency.frequencies import frequency_table
+from ..adjacency.matrix import speed_ratio_matrix
+from ..mechanism.elements import Bearing
 from ._core import Hint, close, register
 
 PLANET_BEARING = Bearing(pitch_diameter=40, ball_diameter=8, balls=9, inner=4, name="planet bearing")

@@ -20,16 +20,16 @@ from ._core import Hint, close, register
     generic_hint="Write theta_{5,2} = theta_{5,4} - theta_{2,4} and use theta_{5,4} = E_{2,5} theta_{2,4}.",
 )
 def gain_rule2():
-    from ..gains import local_gain
-    from ..units import kinematic_units
+    from ..gains.local import local_gain
+    from ..units.fractionation import kinematic_units
 
     unit = kinematic_units(catalog.load("liu_chen_transmission")).unit(1)
     return local_gain(unit, output=(5, 2), input=(2, 4))
 
 
 def _fig1_parts():
-    from ..gains import local_gain
-    from ..units import kinematic_units
+    from ..gains.local import local_gain
+    from ..units.fractionation import kinematic_units
 
     frac = kinematic_units(catalog.load("liu_chen_fig1"))
     return local_gain(frac.unit(1), (1, 5), (4, 5)), local_gain(frac.unit(2), (3, 5), (1, 5))
@@ -51,7 +51,7 @@ def propagation_fig1():
 
 
 def _third(subs=None):
-    from ..relation import propagate
+    from ..gains.relation import propagate
 
     prop = propagate(catalog.load("liu_chen_transmission"), 8, [4], ground=1)
     return next(iter(prop.symbolic().values()))
@@ -81,7 +81,7 @@ def third_gear():
 
 
 def _exercise_robot():
-    from ..mechanism import Mechanism
+    from ..mechanism.data import Mechanism
 
     return Mechanism.from_dict({
         "name": "exercise robot",
@@ -112,6 +112,6 @@ def _exercise_robot():
     standard_hints=False,
 )
 def structure_matrix():
-    from ..robots import geared_robot
+    from ..gains.robots import geared_robot
 
     return geared_robot(_exercise_robot(), end_effector=3).structure_matrix()

@@ -1,6 +1,6 @@
 """Checks for chapter 6's exercises (``exercises/06_differential_synthesis.ipynb``).
 
-Expected answers are computed by :mod:`gearlib.synthesis` and :mod:`gearlib.atlas`; the
+Expected answers are computed by :mod:`gearlib.synthesis` and :mod:`gearlib.synthesis.atlas`; the
 messages give hints, never the answer.
 """
 
@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import sympy
 
-from .. import atlas, catalog, synthesis
+from .. import catalog
+from ..synthesis import atlas
+from ..synthesis import dgm as synthesis
 from ._core import Hint, as_value, close, register, register_custom
 
 _GKC = "cyl_gkc_5_7_2"

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 
 from .. import catalog
-from ..units import kinematic_units
+from ..units.fractionation import kinematic_units
 from ._core import register, register_custom
 
 
@@ -108,6 +108,6 @@ register_custom("linkage_wrist", _accept_linkage, chapter="02",
     standard_hints=False,
 )
 def atlas_single_unit_chains():
-    from .. import atlas
+    from ..synthesis import atlas
 
     return sum(1 for m in atlas.geared_chains(5, 1) if len(kinematic_units(m).units) == 1)

@@ -1,8 +1,10 @@
 """The command line: ``python -m gearlib <command> FILE ...``, for numbers without a notebook.
 
-Each command is a small module in this package with ``NAME``, ``HELP``,
-``add_arguments(parser)`` and ``run(args) -> int``; a chapter adds its command by adding a
-module. FILE is a YAML or JSON mechanism file, or the name of a catalogue entry
+The commands live beside the methods they run, one module per subpackage of gearlib
+(:mod:`.mechanism`: ``speeds``, ``ratio``, ``dof``; :mod:`.units`; :mod:`.gains`;
+:mod:`.adjacency`: ``frequencies``; :mod:`.davies`: ``efficiency``; :mod:`.synthesis`: ``dgm``;
+and :mod:`.catalog`), each listing its ``COMMANDS``; a chapter adds a command to its
+module's list. FILE is a YAML or JSON mechanism file, or the name of a catalogue entry
 (``python -m gearlib catalog`` lists them). Errors in the input print one line and exit
 with status 2; ``--json`` prints machine-readable output.
 """
@@ -10,57 +12,22 @@ with status 2; ``--json`` prints machine-readable output.
 from __future__ import annotations
 
 import argparse
-import importlib
-import json
-import pathlib
-import pkgutil
 import sys
 
 from ..errors import GearlibError
+from ._args import load_mechanism, parse_link_values, print_json
 
 __all__ = ["main", "load_mechanism", "parse_link_values", "print_json", "build_parser"]
 
 
-def load_mechanism(spec: str):
-    """A mechanism from a file path, or from the catalogue by name."""
-    from .. import catalog
-    from ..io import load
-
-    path = pathlib.Path(spec)
-    if path.exists() or spec.endswith((".yaml", ".yml", ".json")) or "/" in spec:
-        return load(path)
-    if spec in catalog.names():
-        return catalog.load(spec)
-    return load(path)  # raises the "no such file" error
-
-
-def parse_link_values(items, *, what: str = "--input", need_value: bool = True) -> dict:
-    """``["3=26", "1/4=1"]`` -> ``{"3": "26", "1/4": "1"}`` (values stay text for the library to read)."""
-    out = {}
-    for item in items or ():
-        key, sep, value = item.partition("=")
-        if not key:
-            raise GearlibError(f"{what} {item!r}: expected LINK=SPEED such as 3=26")
-        if not sep:
-            if need_value:
-                raise GearlibError(f"{what} {item!r}: expected LINK=SPEED such as {item}=1")
-            value = None
-        out[key.strip()] = None if value is None else value.strip()
-    return out
-
-
-def print_json(data) -> None:
-    print(json.dumps(data, indent=2, sort_keys=False))
-
-
 def _commands() -> dict:
-    mods = {}
-    for info in sorted(pkgutil.iter_modules(__path__), key=lambda i: i.name):
-        if info.name.startswith("_"):
-            continue
-        mod = importlib.import_module(f"{__name__}.{info.name}")
-        mods[mod.NAME] = mod
-    return mods
+    from . import adjacency, catalog, davies, gains, mechanism, synthesis, units
+
+    found = {}
+    for mod in (catalog, mechanism, units, gains, adjacency, davies, synthesis):
+        for command in mod.COMMANDS:
+            found[command.name] = command
+    return dict(sorted(found.items()))
 
 
 class _Parser(argparse.ArgumentParser):
@@ -74,10 +41,10 @@ def build_parser():
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
     commands = _commands()
-    for name, mod in commands.items():
-        p = sub.add_parser(name, help=mod.HELP, description=mod.HELP)
-        mod.add_arguments(p)
-        p.set_defaults(_run=mod.run)
+    for name, command in commands.items():
+        p = sub.add_parser(name, help=command.help, description=command.help)
+        command.arguments(p)
+        p.set_defaults(_run=command.run)
     return parser
 
 

@@ -1,18 +1,19 @@
-"""``python -m gearlib catalog [NAME]``: list the catalogue, or print one entry as YAML."""
+"""The catalogue command: ``catalog [NAME]`` lists the catalogue, or prints one entry as YAML.
+"""
 
 from __future__ import annotations
 
 from .. import catalog
+from ._args import Command
 
-NAME = "catalog"
-HELP = "list the catalogue of mechanisms, or print one entry's file"
+# ----------------------------------------------------------------------------- catalog
 
 
-def add_arguments(p):
+def _catalog_arguments(p):
     p.add_argument("name", nargs="?", help="an entry to print")
 
 
-def run(args) -> int:
+def _catalog_run(args) -> int:
     if args.name:
         print(catalog.path(args.name).read_text(encoding="utf-8"), end="")
         return 0
@@ -20,3 +21,9 @@ def run(args) -> int:
         m = catalog.load(name)
         print(f"{name:28s} {m.name}")
     return 0
+
+
+COMMANDS = (
+    Command("catalog", "list the catalogue of mechanisms, or print one entry's file",
+            _catalog_arguments, _catalog_run),
+)

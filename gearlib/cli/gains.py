@@ -1,21 +1,22 @@
-"""``python -m gearlib gains FILE --ground G --input I --output O [--symbolic] [--json]``:
-the propagation path through the kinematic units and the global gain."""
+"""Command of chapter 3 (:mod:`gearlib.gains`).
+
+``gains FILE --ground G --input I --output O [--symbolic] [--json]``: the propagation path
+through the kinematic units and the global gain.
+"""
 
 from __future__ import annotations
 
 import sympy
 
-from ..relation import propagate
-from ..kinematics import _to_complex, format_value
-from ..propagation import theta
-from . import load_mechanism, print_json
-from .speeds import add_common, constraints
+from ..gains.propagation import theta
+from ..gains.relation import propagate
+from ..mechanism.kinematics import _to_complex, format_value
+from ._args import Command, add_common, constraints, load_mechanism, print_json
 
-NAME = "gains"
-HELP = "the unit-by-unit propagation path from input(s) to output and the global gain"
+# ----------------------------------------------------------------------------- gains
 
 
-def add_arguments(p):
+def _gains_arguments(p):
     add_common(p)
     p.add_argument("--input", action="append", required=True, metavar="LINK",
                    help="input link (or U/V); repeat for each degree of freedom")
@@ -31,7 +32,7 @@ def _number(v):
     return [z.real, z.imag]
 
 
-def run(args) -> int:
+def _gains_run(args) -> int:
     mech = load_mechanism(args.file)
     prop = propagate(mech, args.output, args.input, ground=args.ground, **constraints(args))
     exact = prop.relation()
@@ -61,3 +62,9 @@ def run(args) -> int:
         if symbolic is not None:
             print(f"  symbolic: {sympy.sstr(symbolic[(u, v)])}")
     return 0
+
+
+COMMANDS = (
+    Command("gains", "the unit-by-unit propagation path from input(s) to output and the global gain",
+            _gains_arguments, _gains_run),
+)

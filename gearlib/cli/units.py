@@ -1,23 +1,27 @@
-"""``python -m gearlib units FILE [--json]``: the kinematic units and their common linkages."""
+"""Command of chapter 2 (:mod:`gearlib.units`).
+
+``units FILE [--json]``: the kinematic units of a mechanism and their common linkages.
+"""
 
 from __future__ import annotations
 
-from ..units import kinematic_units
-from . import load_mechanism, print_json
+from ..units.fractionation import kinematic_units
+from ._args import Command, load_mechanism, show
 
-NAME = "units"
-HELP = "the kinematic units of a mechanism, their types and the common linkages between them"
+# ----------------------------------------------------------------------------- units
 
 
-def add_arguments(p):
+def _units_arguments(p):
     p.add_argument("file", metavar="FILE", help="mechanism file (YAML/JSON) or catalogue name")
     p.add_argument("--json", action="store_true", help="print the units and linkages as JSON")
 
 
-def run(args) -> int:
+def _units_run(args) -> int:
     frac = kinematic_units(load_mechanism(args.file))
-    if args.json:
-        print_json(frac.to_json())
-    else:
-        print(frac)
-    return 0
+    return show(args, frac)
+
+
+COMMANDS = (
+    Command("units", "the kinematic units of a mechanism, their types and the common linkages between them",
+            _units_arguments, _units_run),
+)

@@ -6,7 +6,8 @@ it to any one-degree-of-freedom gear train with parallel or intersecting axes gi
 :class:`gearlib.Mechanism`:
 
 * :func:`layout` - axes and pitch points from the radii and the topology;
-* :func:`network` - the coupling graph, unit screws and network matrices ``M_N``, ``A_N``;
+* :func:`network` (``coupling_network``) - the coupling graph, unit screws and network
+  matrices ``M_N``, ``A_N``;
 * :func:`motions`, :func:`actions` - the two Kirchhoff laws, with friction as constitutive rows;
 * :func:`coupling_powers`, :func:`mesh_flows`, :func:`power_flow` - power and power flow;
 * :func:`efficiency` - the overall efficiency, numeric or as a formula;
@@ -14,60 +15,37 @@ it to any one-degree-of-freedom gear train with parallel or intersecting axes gi
 * :func:`torque_balance_efficiency` - an independent, conventional check;
 * drawings, a widget, friction models and a generator of random consistent trains.
 
+Everything in ``EXPORTS`` is public; ``TOP`` is also ``gl.<name>``.
+
 >>> import gearlib as gl
 >>> res = gl.davies.efficiency(gl.catalog.humpage(), ground=5, input=1, output=4, eta=0.98)
 >>> round(res.value, 6), res.ratio
 (0.632647, 0.014455782312925...)
 """
 
-from .conventional import TorqueBalance, torque_balance_efficiency
-from .drawing import draw_coupling_graph, plot_coupling_powers, plot_efficiency_sweep, plot_layout, plot_power_flow
-from .examples import humpage_radii, laus_humpage_geometry
-from .friction import (
-    bearing_multiplier,
-    buckingham_efficiency,
-    contact_path,
-    equivalent_zeta,
-    involute_efficiency,
-    pivot_friction_torque,
-)
-from .formulas import FormulaCase, TurningCondition, derivative_check, efficiency_formulas, turning_conditions
-from .generate import KINDS, TrainCase, random_train
-from .geometry import MODES, Axis, Layout, MeshGeometry, layout, radius_symbols
-from .graph import CouplingGraph, replicate
-from .identify import LossFit, efficiencies_from_losses
-from .motion import Motions, check_willis, motions
-from .network import LOSS_ROLES, Coupling, Network, Variable, network
-from .overall import GLOVER, Efficiency, MeshResult, efficiency, eta_symbol
-from .power import (
-    MeshFlow,
-    column_powers,
-    coupling_powers,
-    mesh_flows,
-    mesh_power_ratio,
-    power_flow,
-    real_flows,
-    tellegen,
-)
-from .statics import VISCOUS_LAWS, Actions, actions, viscous_torque
-from .widget import EfficiencyExplorer, efficiency_explorer, with_teeth
+from .._common.exports import lazy
 
-__all__ = [
-    # geometry and network
-    "layout", "Layout", "Axis", "MeshGeometry", "MODES", "radius_symbols",
-    "network", "Network", "Coupling", "Variable", "LOSS_ROLES", "CouplingGraph", "replicate",
-    # the two Kirchhoff laws
-    "motions", "Motions", "check_willis", "actions", "Actions", "viscous_torque", "VISCOUS_LAWS",
-    # power and efficiency
-    "coupling_powers", "column_powers", "tellegen", "power_flow", "mesh_flows", "MeshFlow", "real_flows",
-    "mesh_power_ratio", "efficiency", "Efficiency", "MeshResult", "GLOVER", "eta_symbol",
-    "turning_conditions", "TurningCondition", "efficiency_formulas", "FormulaCase", "derivative_check",
-    "torque_balance_efficiency", "TorqueBalance", "efficiencies_from_losses", "LossFit",
-    # friction models
-    "involute_efficiency", "buckingham_efficiency", "contact_path", "equivalent_zeta", "bearing_multiplier",
-    "pivot_friction_torque",
-    # Laus's models, random trains, drawings, widget
-    "laus_humpage_geometry", "humpage_radii", "random_train", "TrainCase", "KINDS",
-    "draw_coupling_graph", "plot_layout", "plot_coupling_powers", "plot_power_flow", "plot_efficiency_sweep",
-    "efficiency_explorer", "EfficiencyExplorer", "with_teeth",
-]
+EXPORTS = {
+    "geometry": ("Axis", "MeshGeometry", "Layout", "layout", "radius_symbols", "MODES"),
+    "coupling_network": ("Coupling", "Variable", "Network", "network", "LOSS_ROLES"),
+    "graph": ("CouplingGraph", "replicate"),
+    "motion": ("Motions", "motions", "check_willis"),
+    "statics": ("Actions", "actions", "VISCOUS_LAWS", "viscous_torque"),
+    "power": ("coupling_powers", "column_powers", "tellegen", "power_flow", "MeshFlow", "mesh_flows",
+             "real_flows", "mesh_power_ratio"),
+    "overall": ("efficiency", "Efficiency", "MeshResult", "GLOVER", "eta_symbol"),
+    "formulas": ("TurningCondition", "turning_conditions", "FormulaCase", "efficiency_formulas",
+                "derivative_check"),
+    "conventional": ("torque_balance_efficiency", "TorqueBalance"),
+    "identify": ("LossFit", "efficiencies_from_losses"),
+    "friction": ("involute_efficiency", "buckingham_efficiency", "contact_path", "equivalent_zeta",
+                "bearing_multiplier", "pivot_friction_torque"),
+    "examples": ("laus_humpage_geometry", "humpage_radii"),
+    "generate": ("TrainCase", "random_train", "KINDS"),
+    "drawing": ("draw_coupling_graph", "plot_layout", "plot_coupling_powers", "plot_power_flow"),
+    "widget": ("EfficiencyExplorer", "efficiency_explorer", "with_teeth", "plot_efficiency_sweep"),
+}
+
+TOP = ("efficiency", "torque_balance_efficiency")
+
+__getattr__, __dir__, __all__ = lazy(__name__, EXPORTS)

@@ -31,8 +31,8 @@ def rings(symbols):
 
 def ring_factor_list(p, Z):
     """``(constant, [(factor over ZZ, multiplicity)])`` of a polynomial *p* over QQ, with
-    :func:`gearlib._multilinear.factor_list` in *Z*, its ring over the integers."""
-    from .._multilinear import factor_list
+    :func:`gearlib._common.multilinear.factor_list` in *Z*, its ring over the integers."""
+    from .._common.multilinear import factor_list
 
     den, p = p.clear_denoms()  # p * den has integer coefficients
     const, facs = factor_list(p.set_ring(Z))
@@ -42,7 +42,7 @@ def ring_factor_list(p, Z):
 def _ring_factors(expr):
     """``((cn, fn), (cd, fd))`` as :func:`sympy.factor_list` gives them for the numerator and
     the denominator of *expr*, computed in the integer polynomial ring of its symbols (in
-    the order sympy gives them) with :func:`gearlib._multilinear.factor_list`; None when
+    the order sympy gives them) with :func:`gearlib._common.multilinear.factor_list`; None when
     *expr* is not a rational function with rational coefficients."""
     from sympy.polys.polytools import _sorted_factors
 

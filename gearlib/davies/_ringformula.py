@@ -8,7 +8,7 @@ The efficiency needs only the two port actions, and their common denominator can
 
 with ``s`` the port screws dotted with the (numeric) port motions. Both numerators are
 multilinear in the ``zeta`` (each friction column meets one row), so they factor quickly
-(:mod:`gearlib._multilinear`). Each ``zeta`` is then replaced by the Moebius function of its
+(:mod:`gearlib._common.multilinear`). Each ``zeta`` is then replaced by the Moebius function of its
 ordinary efficiency that Laus's eqs. 72-75 give, ``zeta = a(eta) / b(eta)`` with ``a`` and
 ``b`` linear: a factor ``f`` of degree ``d_i`` in ``zeta_i`` becomes the polynomial
 ``sum_m c_m prod_i a_i^m_i b_i^(d_i - m_i)`` over ``prod_i b_i^d_i``, again multilinear, again

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import sympy
 
 from ..errors import ConstraintError, InputError
-from ..kinematics import speeds
+from ..mechanism.kinematics import speeds
 
 __all__ = ["torque_balance_efficiency", "TorqueBalance"]
 

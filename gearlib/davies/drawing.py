@@ -14,14 +14,11 @@ changes matplotlib's global state.
 """
 
 from __future__ import annotations
-
 import math
-
-from ..plot import _axes, graph_layout
+from ..mechanism.plot import _axes, graph_layout
 from .power import coupling_powers, power_flow
 
-__all__ = ["draw_coupling_graph", "plot_layout", "plot_coupling_powers", "plot_power_flow",
-           "plot_efficiency_sweep"]
+__all__ = ['draw_coupling_graph', 'plot_layout', 'plot_coupling_powers', 'plot_power_flow']
 
 
 def draw_coupling_graph(net, ax=None, *, pos=None, font_size=10, node_size=420):
@@ -159,31 +156,4 @@ def plot_power_flow(result, ax=None, *, lossless: bool = True, title=True):
         kind = "lossless" if lossless else "with losses"
         ax.set_title(f"η = {float(result.value):.4g}; largest virtual flow {peak:.3g} × input ({kind}; * = mesh)",
                      fontsize=9)
-    return ax
-
-
-def plot_efficiency_sweep(mech, ground, input, output, *, pair, gear, values, etas=(0.97, 0.98, 0.99), ax=None,
-                          mark=None):
-    """Efficiency against the tooth number of *gear* in gear *pair*, for every ordinary
-    efficiency in *etas* (the same for all meshes). Trains whose radii no longer close a loop
-    are laid out kinematically, which leaves the efficiency unchanged."""
-    from .overall import efficiency
-    from .widget import with_teeth
-
-    ax = _axes(ax, (5.5, 3.4))
-    values = list(values)
-    for e in etas:
-        ys = []
-        for v in values:
-            try:
-                m = with_teeth(mech, pair, gear, int(v))
-                ys.append(float(efficiency(m, ground, input, output, eta=e).value))
-            except ValueError:
-                ys.append(float("nan"))
-        ax.plot(values, ys, marker=".", label=f"η_ij = {e}")
-    if mark is not None:
-        ax.axvline(mark, color="0.5", ls=":")
-    ax.set_xlabel(f"teeth of gear {gear} in pair {tuple(pair)}")
-    ax.set_ylabel("overall efficiency η")
-    ax.legend(fontsize=8, frameon=False)
     return ax

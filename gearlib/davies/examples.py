@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import sympy
 
-from ..mechanism import Mechanism
+from ..mechanism.data import Mechanism
 
 __all__ = ["laus_humpage_geometry", "humpage_radii"]
 

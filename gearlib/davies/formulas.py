@@ -29,7 +29,7 @@ from ..errors import InputError
 from . import _rational
 from .geometry import layout as make_layout
 from .motion import motions as solve_motions
-from .network import network as make_network
+from .coupling_network import network as make_network
 from .overall import efficiency
 from .power import mesh_flows
 from .statics import actions as solve_actions

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from ..mechanism import Mechanism
+from ..mechanism.data import Mechanism
 
 __all__ = ["TrainCase", "random_train", "KINDS"]
 
@@ -95,7 +95,7 @@ def random_train(rng=None, kind: str | None = None) -> TrainCase:
         data = {"name": "random double planet", "links": {1: "central 1", 2: "central 2", 3: "planet", 5: "carrier"},
                 "turning_pairs": [[1, 5, "a"], [1, 2, "a"], [3, 5, "b"]], "gear_pairs": pairs}
         m = Mechanism.from_dict(data)
-        from ..kinematics import speeds
+        from ..mechanism.kinematics import speeds
 
         sol = speeds(m, 1, {5: 1})
         if sol[2] == 0 or sol[2] == 1:

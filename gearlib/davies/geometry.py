@@ -39,9 +39,9 @@ from dataclasses import dataclass, field, replace
 
 import sympy
 
-from .._topology import CoaxialGroups
+from .._common.topology import CoaxialGroups
 from ..errors import DataFormatError, GeometryError, UnknownLinkError
-from ..mechanism import Mechanism
+from ..mechanism.data import Mechanism
 from ._placement import Axis, Builder, MeshGeometry, intersection
 from .screws import cross2
 

@@ -30,7 +30,7 @@ from functools import cached_property
 import numpy as np
 import sympy
 
-from .._topology import UnionFind
+from .._common.topology import UnionFind
 from ..errors import DisconnectedError, InputError
 
 __all__ = ["CouplingGraph", "replicate"]

@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import ConstraintError, InputError
 from .motion import motions as solve_motions
-from .network import network as make_network
+from .coupling_network import network as make_network
 from .power import column_powers, coupling_powers, mesh_flows, mesh_power_ratio
 from .statics import actions as solve_actions
 

@@ -30,7 +30,7 @@ import sympy
 
 from ..errors import ConstraintError, GeometryError, InputError
 from . import _solve
-from .network import Network
+from .coupling_network import Network
 
 __all__ = ["Motions", "motions", "check_willis"]
 
@@ -161,7 +161,7 @@ def motions(net: Network, speed=1, *, check: bool = True) -> Motions:
 def check_willis(mo: Motions, tol: float = 1e-9) -> None:
     """Compare the speed of every turning pair with the Willis equations (:func:`gearlib.speeds`);
     raise :class:`gearlib.GeometryError` naming the first one that disagrees."""
-    from ..kinematics import speeds
+    from ..mechanism.kinematics import speeds
 
     net = mo.network
     mech = net.mechanism

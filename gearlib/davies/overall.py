@@ -31,11 +31,11 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from .._parse import parse_expr
+from .._common.parse import parse_expr
 from ..errors import ConstraintError, InputError
 from . import _rational, _ringformula
 from .motion import Motions, motions as solve_motions
-from .network import Network, network as make_network
+from .coupling_network import Network, network as make_network
 from .power import coupling_powers, mesh_flows, mesh_power_ratio
 from .statics import Actions, actions as solve_actions, viscous_torque
 

@@ -31,7 +31,7 @@ import sympy
 
 from ..errors import ConstraintError, InputError
 from . import _solve
-from .network import Network
+from .coupling_network import Network
 
 __all__ = ["Actions", "actions", "VISCOUS_LAWS", "viscous_torque"]
 

@@ -1,7 +1,7 @@
 """A widget: tooth numbers and ordinary efficiencies -> overall efficiency and power flows.
 
 A thin wrapper over :func:`gearlib.davies.efficiency` and
-:func:`gearlib.davies.plot_power_flow` in the style of :mod:`gearlib.widgets`: a private
+:func:`gearlib.davies.plot_power_flow` in the style of :mod:`gearlib.mechanism.widgets`: a private
 matplotlib figure rendered into an ``ipywidgets.Image``; :meth:`EfficiencyExplorer.update`
 computes and redraws without a browser. Its static twin is
 :func:`gearlib.davies.plot_efficiency_sweep`.
@@ -11,11 +11,12 @@ from __future__ import annotations
 
 import sympy
 
-from ..mechanism import Mechanism
-from ..widgets import Explorer
+from ..mechanism.data import Mechanism
+from ..mechanism.plot import _axes
+from ..mechanism.widgets import Explorer
 from .overall import efficiency
 
-__all__ = ["EfficiencyExplorer", "efficiency_explorer", "with_teeth"]
+__all__ = ["EfficiencyExplorer", "efficiency_explorer", "with_teeth", "plot_efficiency_sweep"]
 
 
 def with_teeth(mech: Mechanism, pair, gear, teeth: int) -> Mechanism:
@@ -81,7 +82,7 @@ class EfficiencyExplorer(Explorer):
             self.result = efficiency(mech, self.ground, self.input, self.output, eta=eta)
             self.text = f"overall efficiency η = {float(self.result.value):.5f}"
             if self._canvas is None:
-                from ..widgets import Canvas
+                from ..mechanism.widgets import Canvas
 
                 self._canvas = Canvas(margins=(0.1, 0.98, 0.12, 0.88), keep_axes=True, stable_limits=True)
             self.image = self._canvas.png(lambda ax: plot_power_flow(self.result, ax=ax))
@@ -108,3 +109,27 @@ def efficiency_explorer(mech: Mechanism, ground, input, output, *, pairs=None, e
     efficiency of every mesh; shows the overall efficiency and the power flows. Static twin:
     :func:`gearlib.davies.plot_efficiency_sweep`."""
     return EfficiencyExplorer(mech, ground, input, output, pairs=pairs, eta=eta, max_teeth=max_teeth)
+
+
+def plot_efficiency_sweep(mech, ground, input, output, *, pair, gear, values, etas=(0.97, 0.98, 0.99), ax=None,
+                          mark=None):
+    """Efficiency against the tooth number of *gear* in gear *pair*, for every ordinary
+    efficiency in *etas* (the same for all meshes). Trains whose radii no longer close a loop
+    are laid out kinematically, which leaves the efficiency unchanged."""
+    ax = _axes(ax, (5.5, 3.4))
+    values = list(values)
+    for e in etas:
+        ys = []
+        for v in values:
+            try:
+                m = with_teeth(mech, pair, gear, int(v))
+                ys.append(float(efficiency(m, ground, input, output, eta=e).value))
+            except ValueError:
+                ys.append(float("nan"))
+        ax.plot(values, ys, marker=".", label=f"η_ij = {e}")
+    if mark is not None:
+        ax.axvline(mark, color="0.5", ls=":")
+    ax.set_xlabel(f"teeth of gear {gear} in pair {tuple(pair)}")
+    ax.set_ylabel("overall efficiency η")
+    ax.legend(fontsize=8, frameon=False)
+    return ax

@@ -1,0 +1,96 @@
+"""Commands of chapters 0 and 1 (:mod:`gearlib.mechanism`).
+
+* ``speeds FILE --ground G --input L=V ... [--json]``: every link's speed;
+* ``ratio FILE --ground G --input I --output O [--symbolic] [--json]``: a speed ratio;
+* ``dof FILE``: degrees of freedom by the counting rules and by rank.
+"""
+
+from __future__ import annotations
+
+import sympy
+
+from ..mechanism.kinematics import METHODS, _to_complex, format_value, ratio, speeds
+from ..mechanism.mobility import dof
+from ._args import Command, add_common, constraints, load_mechanism, parse_link_values, print_json
+
+# ----------------------------------------------------------------------------- speeds
+
+
+def _speeds_arguments(p):
+    add_common(p)
+    p.add_argument("--input", action="append", default=[], metavar="LINK=SPEED",
+                   help="input speed LINK=SPEED (or U/V=SPEED for U relative to V); repeat for several")
+    p.add_argument("--method", choices=METHODS, default="exact")
+    p.add_argument("--json", action="store_true", help="print {dof, speeds: {link: [re, im]}}")
+
+
+def _speeds_run(args) -> int:
+    mech = load_mechanism(args.file)
+    inputs = parse_link_values(args.input)
+    sol = speeds(mech, args.ground, inputs, method=args.method, **constraints(args))
+    if args.json:
+        print_json(sol.to_json())
+    else:
+        print(sol)
+        print(f"degrees of freedom: {sol.dof}")
+    return 0
+
+
+# ----------------------------------------------------------------------------- ratio
+
+
+def _ratio_arguments(p):
+    add_common(p)
+    p.add_argument("--input", required=True, metavar="LINK", help="input link (or U/V)")
+    p.add_argument("--output", required=True, metavar="LINK", help="output link (or U/V)")
+    p.add_argument("--relative-to", metavar="LINK", help="measure both speeds relative to this link (default: ground)")
+    p.add_argument("--symbolic", action="store_true", help="also give the ratio in the gear-ratio symbols e_a_b")
+    p.add_argument("--json", action="store_true", help="print {ratio: [re, im], expression: ...}")
+
+
+def _ratio_run(args) -> int:
+    mech = load_mechanism(args.file)
+    kw = dict(ground=args.ground, relative_to=args.relative_to, **constraints(args))
+    value = None
+    if not mech.is_symbolic:
+        value = ratio(mech, args.output, args.input, **kw)
+    expression = ratio(mech, args.output, args.input, method="symbolic", **kw) if (args.symbolic or value is None) else None
+    if args.json:
+        out = {"ratio": None}
+        if value is not None:
+            z = _to_complex(value)
+            out["ratio"] = [z.real, z.imag]
+        if expression is not None:
+            out["expression"] = str(expression)
+        print_json(out)
+    else:
+        if value is not None:
+            print(f"ratio {args.output}/{args.input} = {format_value(value, 10)}")
+        if expression is not None:
+            print(f"symbolic: {sympy.sstr(expression)}")
+    return 0
+
+
+# ----------------------------------------------------------------------------- dof
+
+
+def _dof_arguments(p):
+    p.add_argument("file", metavar="FILE", help="mechanism file (YAML/JSON) or catalogue name")
+    p.add_argument("--json", action="store_true")
+
+
+def _dof_run(args) -> int:
+    mob = dof(load_mechanism(args.file))
+    if args.json:
+        print_json({"dof": mob.rank, "planar": mob.planar, "count": mob.count, "explanation": list(mob.explanation)})
+    else:
+        print(mob)
+    return 0
+
+
+COMMANDS = (
+    Command("speeds", "every link's angular velocity for given input speeds", _speeds_arguments, _speeds_run),
+    Command("ratio", "the speed ratio output/input of a one-dof mechanism", _ratio_arguments, _ratio_run),
+    Command("dof", "degrees of freedom, by the mobility counts and by the rank of the Willis equations",
+            _dof_arguments, _dof_run),
+)

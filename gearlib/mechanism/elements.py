@@ -1,0 +1,364 @@
+"""The elements a mechanism is built of: links, turning pairs, gear pairs and bearings.
+
+Each is a frozen dataclass validated when it is made, with ``from_data``/``to_data`` for the
+file format (:mod:`gearlib.mechanism.io`); :class:`~gearlib.Mechanism` puts them together and
+checks that they fit. Vocabulary of the papers: links are the vertices of the graph, turning
+pairs its thin edges ``[link, link, axis_label]``, gear pairs its heavy edges, each with a
+carrier (the transfer vertex) that holds both gear axes.
+
+The gear ratio of pair ``(a, b)`` is ``e_{a,b} = omega(b/c) / omega(a/c)`` where ``c`` is the
+carrier and ``omega(u/v)`` the angular velocity of ``u`` relative to ``v``: ``-N_a/N_b`` for an
+external spur mesh, ``+N_a/N_b`` for an internal one; for bevel gears it is complex (Penaud's
+angles) or given with the sign fixed by the chosen axis directions.
+
+>>> import gearlib as gl
+>>> gp = gl.GearPair(gears=(1, 2), teeth=(20, 60))
+>>> gp.e
+-1/3
+"""
+
+from __future__ import annotations
+import numbers
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+import sympy
+from .._common.parse import (
+    expr_to_data,
+    parse_expr,
+    parse_link_id,
+    parse_positive,
+    parse_real_expr,
+    parse_teeth,
+)
+from ..errors import CarrierError, DataFormatError, SelfMeshError, UnknownLinkError
+
+__all__ = ['Link', 'Bearing', 'TurningPair', 'GearPair', 'GEAR_KINDS']
+
+
+GEAR_KINDS = ("external", "internal", "bevel")
+
+
+def _fmt(ids) -> str:
+    return ", ".join(str(i) for i in ids)
+
+
+def _check_keys(data: Mapping, allowed: Sequence[str], where: str) -> None:
+    unknown = [k for k in data if k not in allowed]
+    if unknown:
+        raise DataFormatError(
+            f"{where}: unknown field {unknown[0]!r}; known fields are {', '.join(allowed)}"
+        )
+
+
+def _seq(value, where: str, what: str) -> tuple:
+    """A list/tuple field as a tuple (None means empty), or a DataFormatError."""
+    if value is None:
+        return ()
+    if isinstance(value, (str, bytes, Mapping)) or not isinstance(value, Sequence):
+        raise DataFormatError(f"{where}: `{what}` must be a list, got {value!r}")
+    return tuple(value)
+
+
+def _text(value, where: str, what: str) -> str | None:
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return str(value)
+    raise DataFormatError(f"{where}: `{what}` must be text, got {value!r}")
+
+
+def _pair_of(value, where: str, what: str) -> tuple:
+    if isinstance(value, (str, bytes)) or not isinstance(value, Sequence) or len(value) != 2:
+        raise DataFormatError(f"{where}: `{what}` must be a list of two values, got {value!r}")
+    return tuple(value)
+
+
+@dataclass(frozen=True)
+class Link:
+    """A link (vertex): an id and an optional name such as ``"sun"`` or ``"carrier"``."""
+
+    id: int | str
+    name: str | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "id", parse_link_id(self.id, "link"))
+        if self.name is not None and not isinstance(self.name, str):
+            object.__setattr__(self, "name", str(self.name))
+
+    @property
+    def label(self) -> str:
+        """``"3 (planet)"``, or just ``"3"`` without a name."""
+        return f"{self.id} ({self.name})" if self.name else str(self.id)
+
+
+@dataclass(frozen=True)
+class Bearing:
+    """Geometry of a rolling bearing inside a turning pair (Penaud and Alazard, Fig. 1-2).
+
+    Parameters
+    ----------
+    pitch_diameter : float
+        Mean (pitch) diameter ``D_m`` of the rolling elements' centres.
+    ball_diameter : float
+        Diameter ``d_b`` of a ball or roller, same unit as ``pitch_diameter``.
+    balls : int
+        Number ``Z`` of rolling elements.
+    contact_angle : expression, optional
+        Contact angle ``alpha`` in radians (``"15*deg"`` reads as 15 degrees). Default 0.
+    inner : link id, optional
+        The link that carries the inner ring; the other link of the pair carries the outer ring.
+    name : str, optional
+    """
+
+    pitch_diameter: float
+    ball_diameter: float
+    balls: int
+    contact_angle: sympy.Expr = sympy.Integer(0)
+    inner: int | str | None = None
+    name: str | None = None
+
+    def __post_init__(self):
+        where = f"bearing {self.name}" if self.name else "bearing"
+        object.__setattr__(self, "pitch_diameter", parse_positive(self.pitch_diameter, where + " pitch_diameter"))
+        object.__setattr__(self, "ball_diameter", parse_positive(self.ball_diameter, where + " ball_diameter"))
+        if self.ball_diameter >= self.pitch_diameter:
+            raise DataFormatError(
+                f"{where}: ball_diameter {self.ball_diameter} must be smaller than pitch_diameter "
+                f"{self.pitch_diameter}"
+            )
+        object.__setattr__(self, "balls", parse_teeth(self.balls, where + " balls"))
+        angle = parse_real_expr(self.contact_angle, where + " contact_angle")
+        if not (0 <= float(angle) < float(sympy.pi / 2)):
+            raise DataFormatError(f"{where}: contact_angle must be a number in [0, pi/2) radians, got {angle} "
+                                  "(write degrees as 15*deg)")
+        object.__setattr__(self, "contact_angle", angle)
+        if self.inner is not None:
+            object.__setattr__(self, "inner", parse_link_id(self.inner, where + " inner"))
+        object.__setattr__(self, "name", _text(self.name, where, "name"))
+
+    @classmethod
+    def from_dict(cls, data: Mapping, where: str = "bearing") -> Bearing:
+        if not isinstance(data, Mapping):
+            raise DataFormatError(f"{where}: a bearing must be a mapping, got {data!r}")
+        fields = ("pitch_diameter", "ball_diameter", "balls", "contact_angle", "inner", "name")
+        _check_keys(data, fields, where)
+        missing = [f for f in fields[:3] if f not in data]
+        if missing:
+            raise DataFormatError(f"{where}: missing field {missing[0]!r}")
+        return cls(**dict(data))
+
+    def to_dict(self) -> dict:
+        out = {"pitch_diameter": self.pitch_diameter, "ball_diameter": self.ball_diameter, "balls": self.balls}
+        if self.contact_angle != 0:
+            out["contact_angle"] = expr_to_data(self.contact_angle)
+        if self.inner is not None:
+            out["inner"] = self.inner
+        if self.name:
+            out["name"] = self.name
+        return out
+
+
+@dataclass(frozen=True)
+class TurningPair:
+    """A turning pair (thin edge) joining two links about the axis with the given label."""
+
+    links: tuple
+    axis: str
+    bearings: tuple[Bearing, ...] = ()
+
+    def __post_init__(self):
+        a, b = _pair_of(self.links, "turning pair", "links")
+        where = f"turning pair ({a}, {b})"
+        a, b = parse_link_id(a, where), parse_link_id(b, where)
+        object.__setattr__(self, "links", (a, b))
+        if a == b:
+            raise SelfMeshError(f"{where} joins link {a} to itself; a turning pair joins two different links")
+        if isinstance(self.axis, bool) or not isinstance(self.axis, (str, numbers.Integral)) or str(self.axis) == "":
+            raise DataFormatError(f"{where}: axis label must be a short text such as 'a', got {self.axis!r}")
+        object.__setattr__(self, "axis", str(self.axis))
+        bearings = tuple(
+            b if isinstance(b, Bearing) else Bearing.from_dict(b, f"{where} bearing {i + 1}")
+            for i, b in enumerate(_seq(self.bearings, where, "bearings"))
+        )
+        for brg in bearings:
+            if brg.inner is not None and brg.inner not in (a, b):
+                raise UnknownLinkError(f"{where}: bearing inner ring on link {brg.inner}, which is not {a} or {b}")
+        object.__setattr__(self, "bearings", bearings)
+
+    @classmethod
+    def from_data(cls, data, where: str = "turning pair") -> TurningPair:
+        """From ``[a, b, label]`` or ``{"links": [a, b], "axis": label, "bearings": [...]}``."""
+        if isinstance(data, TurningPair):
+            return data
+        if isinstance(data, Mapping):
+            _check_keys(data, ("links", "axis", "bearings"), where)
+            if "links" not in data or "axis" not in data:
+                raise DataFormatError(f"{where}: needs `links: [a, b]` and `axis`")
+            return cls(data["links"], data["axis"], _seq(data.get("bearings"), where, "bearings"))
+        if isinstance(data, Sequence) and not isinstance(data, (str, bytes)) and len(data) == 3:
+            return cls((data[0], data[1]), data[2])
+        raise DataFormatError(f"{where}: expected [link, link, axis_label], got {data!r}")
+
+    def to_data(self):
+        if self.bearings:
+            return {"links": list(self.links), "axis": self.axis, "bearings": [b.to_dict() for b in self.bearings]}
+        return [self.links[0], self.links[1], self.axis]
+
+
+@dataclass(frozen=True)
+class GearPair:
+    """A gear pair (heavy edge) between the gears on links ``gears[0]`` and ``gears[1]``.
+
+    Give ``teeth`` (and ``kind``), or a ``ratio`` ``e_{a,b}`` (a number or an expression),
+    or both when they agree. Bevel pairs need Penaud's ``angles`` ``(theta_a, theta_b)``
+    with their teeth, or a signed ``ratio``. ``radii`` are pitch radii, used only by the
+    efficiency chapter; ``carrier`` is filled in by :class:`Mechanism` when left out.
+    """
+
+    gears: tuple
+    teeth: tuple[int, int] | None = None
+    ratio: sympy.Expr | None = None
+    carrier: int | str | None = None
+    kind: str = "external"
+    angles: tuple | None = None
+    radii: tuple[float, float] | None = None
+    name: str | None = None
+
+    def __post_init__(self):
+        a, b = _pair_of(self.gears, "gear pair", "gears")
+        where = f"gear pair ({a}, {b})"
+        a, b = parse_link_id(a, where), parse_link_id(b, where)
+        object.__setattr__(self, "gears", (a, b))
+        if a == b:
+            raise SelfMeshError(f"{where} meshes gear {a} with itself; a gear pair needs two different links")
+        if not isinstance(self.kind, str) or self.kind not in GEAR_KINDS:
+            raise DataFormatError(f"{where}: type must be one of {', '.join(GEAR_KINDS)}, got {self.kind!r}")
+        if self.teeth is not None:
+            ta, tb = _pair_of(self.teeth, where, "teeth")
+            object.__setattr__(
+                self, "teeth", (parse_teeth(ta, f"{where}, gear {a}"), parse_teeth(tb, f"{where}, gear {b}"))
+            )
+        if self.ratio is not None:
+            r = parse_expr(self.ratio, f"{where} ratio")
+            if r == 0:
+                raise DataFormatError(f"{where}: ratio must not be zero")
+            object.__setattr__(self, "ratio", r)
+        if self.angles is not None:
+            th = _pair_of(self.angles, where, "angles")
+            th = tuple(parse_real_expr(t, f"{where} angle") for t in th)
+            object.__setattr__(self, "angles", th)
+            if self.teeth is None:
+                raise DataFormatError(f"{where}: `angles` (Penaud's complex weights) need `teeth` as well")
+        if self.radii is not None:
+            ra, rb = _pair_of(self.radii, where, "radii")
+            object.__setattr__(
+                self, "radii", (parse_positive(ra, f"{where} radius of {a}"), parse_positive(rb, f"{where} radius of {b}"))
+            )
+        object.__setattr__(self, "name", _text(self.name, where, "name"))
+        if self.carrier is not None:
+            c = parse_link_id(self.carrier, where)
+            object.__setattr__(self, "carrier", c)
+            if c in (a, b):
+                raise CarrierError(f"{where}: the carrier must be a third link, not gear {c} itself")
+        if self.teeth is None and self.ratio is None:
+            raise DataFormatError(f"{where}: give `teeth: [N_{a}, N_{b}]` or a gear `ratio`")
+        if self.kind == "bevel" and self.ratio is None and self.angles is None:
+            raise DataFormatError(
+                f"{where}: a bevel pair needs Penaud's `angles: [theta_{a}, theta_{b}]` or a signed `ratio`; "
+                "the sign of a bevel ratio depends on the chosen axis directions"
+            )
+        self._check_ratio_agrees(where)
+
+    def _teeth_ratio(self):
+        a_n, b_n = self.teeth
+        if self.angles is not None:
+            ta, tb = self.angles
+            return sympy.nsimplify(-sympy.Rational(a_n, b_n) * sympy.exp(sympy.I * (ta - tb)))
+        sign = -1 if self.kind == "external" else 1
+        return sympy.Rational(sign * a_n, b_n)
+
+    def _check_ratio_agrees(self, where):
+        if self.teeth is None or self.ratio is None or self.ratio.free_symbols:
+            return
+        if self.kind == "bevel" and self.angles is None:
+            ok = sympy.simplify(abs(self.ratio) - sympy.Rational(*self.teeth)) == 0
+        else:
+            ok = sympy.simplify(self.ratio - self._teeth_ratio()) == 0
+        if not ok:
+            raise DataFormatError(
+                f"{where}: ratio {self.ratio} disagrees with teeth {list(self.teeth)} ({self.kind}); "
+                "give one of them, or make them agree"
+            )
+
+    @cached_property
+    def e(self) -> sympy.Expr:
+        """The gear ratio ``e_{a,b} = omega(b/c) / omega(a/c)``, exact (or symbolic)."""
+        if self.ratio is not None:
+            return self.ratio
+        return self._teeth_ratio()
+
+    @cached_property
+    def e_value(self) -> complex:
+        """The gear ratio as a (complex) floating-point number, for numeric solvers."""
+        if self.ratio is None and self.angles is None:
+            na, nb = self.teeth
+            return complex((-na if self.kind == "external" else na) / nb)
+        if self.e.free_symbols:
+            raise DataFormatError(f"gear pair {self.label} has a symbolic ratio {self.e}; substitute numbers")
+        return complex(sympy.N(self.e, 20))
+
+    @property
+    def symbol(self) -> sympy.Symbol:
+        """The symbol ``e_a_b`` that stands for this pair's ratio in symbolic analyses."""
+        return sympy.Symbol(f"e_{self.gears[0]}_{self.gears[1]}")
+
+    @cached_property
+    def weights(self) -> tuple[sympy.Expr, sympy.Expr]:
+        """Penaud's table entries ``(T(a, b), T(b, a))``, with ``e = -T(a,b)/T(b,a)``."""
+        if self.teeth is not None and (self.ratio is None or self.ratio.free_symbols == set()):
+            na, nb = self.teeth
+            if self.angles is not None:
+                ta, tb = self.angles
+                return (na * sympy.exp(sympy.I * ta), nb * sympy.exp(sympy.I * tb))
+            if self.kind == "bevel":  # teeth with a signed ratio: keep the magnitudes, carry the sign
+                return (sympy.Integer(na), sympy.nsimplify(-na / self.e))
+            return (sympy.Integer(na), sympy.Integer(nb if self.kind == "external" else -nb))
+        return (-self.e, sympy.Integer(1))
+
+    @property
+    def label(self) -> str:
+        a, b = self.gears
+        return f"({a}, {b})"
+
+    @classmethod
+    def from_data(cls, data, where: str = "gear pair") -> GearPair:
+        if isinstance(data, GearPair):
+            return data
+        if not isinstance(data, Mapping):
+            raise DataFormatError(f"{where}: expected a mapping such as {{gears: [1, 2], teeth: [20, 40]}}, got {data!r}")
+        fields = ("gears", "teeth", "ratio", "carrier", "type", "kind", "angles", "radii", "name")
+        _check_keys(data, fields, where)
+        if "gears" not in data:
+            raise DataFormatError(f"{where}: missing `gears: [a, b]`")
+        kw = {k: v for k, v in data.items() if k not in ("type", "kind")}
+        kind = data.get("type", data.get("kind", "external"))
+        return cls(kind=kind, **kw)
+
+    def to_data(self) -> dict:
+        out: dict = {"gears": list(self.gears)}
+        if self.teeth is not None:
+            out["teeth"] = list(self.teeth)
+        if self.ratio is not None:
+            out["ratio"] = expr_to_data(self.ratio)
+        if self.kind != "external":
+            out["type"] = self.kind
+        if self.angles is not None:
+            out["angles"] = [expr_to_data(t) for t in self.angles]
+        if self.radii is not None:
+            out["radii"] = list(self.radii)
+        if self.carrier is not None:
+            out["carrier"] = self.carrier
+        if self.name:
+            out["name"] = self.name
+        return out

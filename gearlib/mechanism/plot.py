@@ -1,0 +1,192 @@
+"""Drawings: the graph of a mechanism in the papers' convention, and speeds.
+
+Every function takes ``ax=`` (a new figure is made when it is None), draws, and returns
+the axes; none calls ``plt.show()``. Nothing here changes matplotlib's global settings:
+:func:`style` is a context manager for the book's look.
+
+Graph convention (Freudenstein; Tsai; Liu and Chen): links are vertices, gear pairs heavy
+edges, turning pairs thin edges labelled with their axis. The ground is drawn as a grey
+square, input links as black squares, other links as circles.
+"""
+
+from __future__ import annotations
+import contextlib
+import functools
+import math
+import textwrap
+import numpy as np
+from .graph import to_networkx
+from .data import Mechanism
+
+__all__ = ['style', 'graph_layout', 'draw_graph', 'plot_speeds', 'plot_ratio_sweep']
+
+
+_STYLE = {
+    "figure.figsize": (6.0, 4.0),
+    "figure.dpi": 100,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "font.size": 10,
+}
+
+
+@contextlib.contextmanager
+def style():
+    """The book's plotting style, as a context: ``with gl.plot.style(): ...``."""
+    import matplotlib
+
+    with matplotlib.rc_context(_STYLE):
+        yield
+
+
+def _axes(ax, figsize=(5.0, 4.0)):
+    if ax is not None:
+        return ax
+    import matplotlib.pyplot as plt
+
+    _, ax = plt.subplots(figsize=figsize)
+    return ax
+
+
+def graph_layout(mech: Mechanism) -> dict:
+    """Vertex positions: the mechanism's own ``layout`` when it has one, else a
+    deterministic Kamada-Kawai layout of its graph."""
+    if mech.layout:
+        return dict(mech.layout)
+    edges = tuple(tp.links for tp in mech.turning_pairs) + tuple(gp.gears for gp in mech.gear_pairs)
+    return dict(_kamada_kawai(tuple(mech.link_ids), edges))
+
+
+@functools.lru_cache(maxsize=64)
+def _kamada_kawai(nodes: tuple, edges: tuple) -> tuple:
+    """The layout of one graph (deterministic, so a widget redrawing a chain reuses it)."""
+    import networkx as nx
+
+    g = nx.Graph()
+    g.add_nodes_from(nodes)
+    g.add_edges_from(edges)
+    if len(g) <= 2:
+        return tuple((n, (float(i), 0.0)) for i, n in enumerate(nodes))
+    # start from a circle so the result does not depend on any random state
+    start = {n: (math.cos(2 * math.pi * i / len(g)), math.sin(2 * math.pi * i / len(g))) for i, n in enumerate(nodes)}
+    pos = nx.kamada_kawai_layout(g, pos=start)
+    return tuple((n, (float(x), float(y))) for n, (x, y) in pos.items())
+
+
+def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, highlight=(),
+               highlight_color="tab:orange", title=None, node_size=420, font_size=10):
+    """Draw the graph of *mech*: heavy edges for gear pairs, thin labelled edges for turning pairs.
+
+    Parameters
+    ----------
+    ground, inputs : link ids drawn as a grey square and black squares (default: the
+        mechanism's own ``ground`` and ``inputs``).
+    pos : dict link -> (x, y), optional; default :func:`gearlib.mechanism.graph_layout`.
+    highlight : links or gear pairs (2-tuples of gears) drawn in ``highlight_color``.
+    """
+    from matplotlib.patches import FancyArrowPatch
+
+    ax = _axes(ax)
+    pos = dict(pos or graph_layout(mech))
+    ground = mech.ground if ground is None else mech.resolve(ground)
+    inputs = set(mech.inputs if inputs is None else (mech.resolve(x) for x in inputs))
+    hl = set()
+    for h in highlight or ():
+        hl.add(frozenset(h) if isinstance(h, tuple) else h)
+    g = to_networkx(mech)
+    seen: dict = {}
+    for u, v, data in g.edges(data=True):
+        key = frozenset((u, v))
+        k = seen.get(key, 0)
+        seen[key] = k + 1
+        rad = 0.0 if k == 0 else 0.25 * (1 if k % 2 else -1) * ((k + 1) // 2)
+        heavy = data["kind"] == "heavy"
+        color = highlight_color if key in hl else "black"
+        patch = FancyArrowPatch(
+            pos[u], pos[v], arrowstyle="-", connectionstyle=f"arc3,rad={rad}",
+            linewidth=4.0 if heavy else 1.2, color=color, zorder=1, shrinkA=0, shrinkB=0,
+        )
+        ax.add_artist(patch)  # not add_patch: the limits are set below, so no curve extents are needed
+        if not heavy:
+            (x0, y0), (x1, y1) = pos[u], pos[v]
+            mx, my = (x0 + x1) / 2, (y0 + y1) / 2
+            dx, dy = x1 - x0, y1 - y0
+            norm = math.hypot(dx, dy) or 1.0
+            off = 0.06 + rad * 0.5
+            ax.text(mx - dy / norm * off, my + dx / norm * off, data["axis"], fontsize=font_size - 1,
+                    ha="center", va="center", style="italic", color=color, zorder=3)
+    nodes: dict = {}  # marker -> (positions, faces, edges): one scatter per marker
+    for link in mech.link_ids:
+        x, y = pos[link]
+        marker, face = "o", "white"
+        if link == ground:
+            marker, face = "s", "0.75"
+        elif link in inputs:
+            marker, face = "s", "black"
+        group = nodes.setdefault(marker, ([], [], []))
+        group[0].append((x, y))
+        group[1].append(face)
+        group[2].append(highlight_color if link in hl else "black")
+        ax.text(x, y, str(link), ha="center", va="center", fontsize=font_size,
+                color="white" if face == "black" else "black", zorder=4)
+    for marker, (xy, faces, edges) in nodes.items():
+        ax.scatter(*zip(*xy), s=node_size, marker=marker, facecolor=faces, edgecolor=edges, linewidth=1.5, zorder=2)
+    xs = [p[0] for p in pos.values()]
+    ys = [p[1] for p in pos.values()]
+    pad = 0.15 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
+    ax.set_xlim(min(xs) - pad, max(xs) + pad)
+    ax.set_ylim(min(ys) - pad, max(ys) + pad)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    ax.set_title(title if title is not None else mech.name)
+    return ax
+
+
+def plot_speeds(solution, ax=None, *, links=None, title=None):
+    """Bar chart of link speeds (relative to the ground) from a :class:`~gearlib.Solution`.
+
+    Complex speeds (bevel trains in Penaud's method) are drawn by magnitude, with their
+    angle written on the bar.
+    """
+    ax = _axes(ax, figsize=(6.0, 3.2))
+    mech = solution.mechanism
+    links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))
+    values = np.array([complex(solution.as_complex()[mech.index[x]]) for x in links])
+    is_complex = np.any(np.abs(values.imag) > 1e-12 * np.maximum(1.0, np.abs(values)))
+    heights = np.abs(values) if is_complex else values.real
+    # names wrapped to the width of a bar slot (about 70 characters across at this size)
+    width = max(8, 70 // max(1, len(links)))
+    names = [f"{x}\n{textwrap.fill(mech.link(x).name, width)}" if mech.link(x).name else str(x) for x in links]
+    colors = ["0.6" if x == solution.constraints.ground else "tab:blue" for x in links]
+    bars = ax.bar(range(len(links)), heights, color=colors)
+    ax.set_xticks(range(len(links)), names, fontsize=8)
+    ax.axhline(0, color="black", linewidth=0.8)
+    ax.set_ylabel("|ω|" if is_complex else "ω")
+    for bar, z, h in zip(bars, values, heights):
+        text = f"{h:.3g}" if not is_complex else f"{abs(z):.3g}\n∠{np.angle(z):.2f}"
+        ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
+                    va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
+                    textcoords="offset points")
+    ax.margins(y=0.2 if is_complex else 0.12)  # room for the value labels under the title
+    ax.set_title(title if title is not None else f"speeds, link {solution.constraints.ground} fixed")
+    return ax
+
+
+def plot_ratio_sweep(xs, ratios, ax=None, *, xlabel="", ylabel="speed ratio", marks=(), title=None):
+    """Line plot of a speed ratio against a design parameter (the static twin of a slider).
+
+    ``marks`` are x values to highlight (for example the settings a widget starts at).
+    """
+    ax = _axes(ax, figsize=(5.0, 3.2))
+    xs = np.asarray(xs, dtype=float)
+    ys = np.asarray([float(r) for r in ratios])
+    ax.plot(xs, ys, marker="o", markersize=3)
+    for x in marks:
+        i = int(np.argmin(np.abs(xs - x)))
+        ax.plot([xs[i]], [ys[i]], marker="o", markersize=8, color="tab:orange")
+        ax.annotate(f"{ys[i]:.4g}", (xs[i], ys[i]), xytext=(5, 5), textcoords="offset points")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if title:
+        ax.set_title(title)
+    return ax
