@@ -2,9 +2,11 @@
 
 import copy
 import json
+import math
 
 import pytest
 import sympy
+import yaml
 
 import gearlib as gl
 from conftest import PLANETARY
@@ -182,3 +184,97 @@ def test_control_characters_in_ids_stay_on_one_line(planetary_data, bad):
     text = str(info.value)
     assert "\n" not in text and "\t" not in text and "\r" not in text
     assert text.startswith("turning pair (") and repr(bad)[1:-1] in text
+
+
+# --------------------------------------------------------------------------- transmissions as data
+SIMPSON = yaml.safe_load(gl.catalog.path("simpson").read_text())
+
+
+def with_shifting(**extra):
+    d = copy.deepcopy(SIMPSON)
+    d.update(extra)
+    return d
+
+
+ELEMENTS = [{"name": "B1", "type": "brake", "link": 4}, {"name": "C1", "type": "clutch", "links": [1, 2]}]
+
+
+def test_shift_elements_and_schedule_round_trip_and_give_each_gear_its_constraints():
+    m = gl.Mechanism.from_dict(with_shifting(
+        shift_elements=ELEMENTS, schedule=[{"gear": "1st", "engaged": ["B1"]}, {"gear": "3rd", "engaged": ["C1"]}],
+        output=3, planets={5: 3, 6: 4}))
+    assert [e.name for e in m.shift_elements] == ["B1", "C1"]
+    assert m.gear_constraints("1st") == {"held": [4], "joined": []}
+    assert m.gear_constraints("3rd") == {"held": [], "joined": [(1, 2)]}
+    assert m.planet_count(5) == 3 and m.planet_count(6) == 4 and m.planet_count(1) == 1
+    assert gl.Mechanism.from_dict(m.to_dict()) == m
+    # first gear, rear carrier 4 braked, input front ring 2, from the two Willis equations:
+    # rear set (carrier 4 held): w1 = -(72/30) w3; front set (carrier 3): w1 - w3 = -(72/30)(w2 - w3)
+    k = sympy.Rational(72, 30)
+    w2, w3 = sympy.symbols("w2 w3")
+    w1 = -k * w3
+    sol = sympy.solve([sympy.Eq(w1 - w3, -k * (w2 - w3)), sympy.Eq(w2, 1)], [w2, w3])
+    sp = gl.speeds(m, 0, {2: 1}, **m.gear_constraints("1st"))
+    assert sp[3] == sol[w3]
+
+
+BAD_SHIFTING = [
+    ("brake on an unknown link", dict(shift_elements=[{"name": "B", "type": "brake", "link": 9}]),
+     gl.UnknownLinkError, "unknown link 9"),
+    ("clutch on one link", dict(shift_elements=[{"name": "C", "type": "clutch", "links": [2, 2]}]),
+     gl.DataFormatError, "joins link 2 to itself"),
+    ("clutch with three links", dict(shift_elements=[{"name": "C", "type": "clutch", "links": [1, 2, 3]}]),
+     gl.DataFormatError, "got 3 link(s)"),
+    ("unknown element type", dict(shift_elements=[{"name": "F", "type": "freewheel", "link": 2}]),
+     gl.DataFormatError, "brake or clutch"),
+    ("element without a name", dict(shift_elements=[{"type": "brake", "link": 2}]), gl.DataFormatError, "name"),
+    ("two elements with one name", dict(shift_elements=[ELEMENTS[0], {"name": "B1", "type": "brake", "link": 2}]),
+     gl.DuplicateEdgeError, "declared twice"),
+    ("brake on the frame", dict(shift_elements=[{"name": "B", "type": "brake", "link": 0}]),
+     gl.DataFormatError, "to itself"),
+    ("clutch to the frame", dict(shift_elements=[{"name": "C", "type": "clutch", "links": [0, 2]}]),
+     gl.DataFormatError, "that is a brake"),
+    ("gear engages an unknown element",
+     dict(shift_elements=ELEMENTS, schedule=[{"gear": "1st", "engaged": ["B2"]}]),
+     gl.UnknownLinkError, "unknown shift element 'B2'"),
+    ("gear listed twice",
+     dict(shift_elements=ELEMENTS, schedule=[{"gear": "1st", "engaged": ["B1"]}, {"gear": "1st", "engaged": ["C1"]}]),
+     gl.DuplicateEdgeError, "listed twice"),
+    ("gear engages an element twice", dict(shift_elements=ELEMENTS, schedule=[{"gear": "1st", "engaged": ["B1", "B1"]}]),
+     gl.DataFormatError, "twice"),
+    ("schedule entry without a name", dict(shift_elements=ELEMENTS, schedule=[{"engaged": ["B1"]}]),
+     gl.DataFormatError, "gear:"),
+    ("planets on a link that is no gear", dict(planets={4: 3}), gl.DataFormatError, "not a gear"),
+    ("a fractional planet count", dict(planets={5: 2.5}), gl.DataFormatError, "whole number"),
+    ("a planet count of True", dict(planets={5: True}), gl.DataFormatError, "whole number"),
+    ("planets as a list", dict(planets=[5, 3]), gl.DataFormatError, "mapping"),
+    ("output not a link", dict(output=12), gl.UnknownLinkError, "`output`"),
+    ("type and kind disagree",
+     dict(gear_pairs=[dict(SIMPSON["gear_pairs"][0], type="external", kind="internal")] + SIMPSON["gear_pairs"][1:]),
+     gl.DataFormatError, "disagree"),
+    ("module and normal module", dict(gear_pairs=[dict(SIMPSON["gear_pairs"][0], module=2, normal_module=2)]
+                                     + SIMPSON["gear_pairs"][1:]), gl.DataFormatError, "not both"),
+    ("helix angle without a normal module",
+     dict(gear_pairs=[dict(SIMPSON["gear_pairs"][0], helix_angle="20*deg")] + SIMPSON["gear_pairs"][1:]),
+     gl.DataFormatError, "normal_module"),
+]
+
+
+@pytest.mark.parametrize("description, extra, error, text", BAD_SHIFTING, ids=[b[0] for b in BAD_SHIFTING])
+def test_malformed_shift_data_raise_a_named_error(description, extra, error, text):
+    with pytest.raises(error) as info:
+        gl.Mechanism.from_dict(with_shifting(**extra))
+    assert text in str(info.value), str(info.value)
+    assert "\n" not in str(info.value)
+
+
+def test_pitch_radii_from_the_module_or_the_normal_module_and_helix_angle():
+    spur = gl.GearPair((1, 2), teeth=(20, 44), module=2.5)
+    assert spur.pitch_radii == (25.0, 55.0)  # r = m z / 2
+    helical = gl.GearPair((1, 2), teeth=(20, 44), normal_module=2, helix_angle="30*deg")
+    m_t = 2 / math.cos(math.radians(30))  # transverse module of a helical gear
+    assert helical.pitch_radii == pytest.approx((m_t * 10, m_t * 22), rel=1e-12)
+    assert gl.GearPair((1, 2), teeth=(20, 44)).pitch_radii is None
+    assert gl.GearPair((1, 2), teeth=(20, 44), radii=(25, 55), module=2.5).pitch_radii == (25.0, 55.0)
+    with pytest.raises(gl.DataFormatError, match="disagree with module"):
+        gl.GearPair((1, 2), teeth=(20, 44), radii=(25, 56), module=2.5)

@@ -5,7 +5,8 @@ Penaud and Alazard: links are vertices, gear pairs heavy edges with a carrier (t
 vertex), turning pairs thin edges labelled with their axis. This package holds
 
 * the data: ``elements`` (links, turning pairs, gear pairs, bearings), ``data``
-  (:class:`~gearlib.Mechanism`, validated and frozen), ``io`` (YAML and JSON files) and
+  (:class:`~gearlib.Mechanism`, validated and frozen), ``shifting`` (a transmission's brakes,
+  clutches and schedule), ``io`` (YAML and JSON files) and
   ``generate`` (random valid mechanisms, long serial trains);
 * the graph and the Willis (fundamental-circuit) equations: ``graph``, ``equations``;
 * the solvers and the degrees of freedom: ``kinematics`` (:func:`~gearlib.speeds`,
@@ -23,6 +24,7 @@ from .._common.exports import lazy
 EXPORTS = {
     "elements": ("Link", "Bearing", "TurningPair", "GearPair", "GEAR_KINDS"),
     "data": ("Mechanism",),
+    "shifting": ("ShiftElement", "GearState", "SHIFT_KINDS"),
     "io": ("load", "save", "loads"),
     "generate": ("random_mechanism", "serial_train"),
     "graph": ("to_networkx", "FundamentalCircuit", "fundamental_circuits", "displacement_graph"),

@@ -48,11 +48,13 @@ from ..errors import (
     UnknownLinkError,
 )
 from .elements import GearPair, Link, TurningPair, _check_keys, _fmt, _pair_of, _seq, _text
+from .shifting import validate as validate_shifting
 
 __all__ = ['Mechanism']
 
 
-_MECH_FIELDS = ("name", "description", "source", "links", "turning_pairs", "gear_pairs", "ground", "inputs", "layout")
+_MECH_FIELDS = ("name", "description", "source", "links", "turning_pairs", "gear_pairs", "ground", "inputs", "layout",
+                "output", "planets", "shift_elements", "schedule")
 
 
 @dataclass(frozen=True)
@@ -74,6 +76,16 @@ class Mechanism:
         The usual input links (a default for drawings and the command line).
     layout : tuple of (link id, (x, y)), optional
         Positions for drawing the graph as the source draws it.
+    output : link id, optional
+        The usual output link (a transmission's output shaft).
+    planets : tuple of (link id, count), optional
+        Planets that stand for ``count`` identical, equally spaced planets on their carrier
+        (``planets: {3: 4}`` in a file); kinematics needs one, assembly conditions and fault
+        frequencies need the count (:meth:`planet_count`).
+    shift_elements, schedule : tuple
+        A transmission's brakes and clutches (:class:`~gearlib.mechanism.ShiftElement`) and
+        its gears, each the set of elements it engages (:class:`~gearlib.mechanism.GearState`);
+        see :mod:`gearlib.mechanism.shifting`.
     """
 
     links: tuple
@@ -85,6 +97,10 @@ class Mechanism:
     ground: int | str | None = None
     inputs: tuple = ()
     layout: tuple | None = field(default=None, compare=False)
+    output: int | str | None = None
+    planets: tuple = ()
+    shift_elements: tuple = ()
+    schedule: tuple = ()
 
     # ------------------------------------------------------------------ validation
     def __post_init__(self):
@@ -145,7 +161,7 @@ class Mechanism:
                 "such a loop would be rigid. Only coaxial bearings (one label) may form loops: "
                 "check the axis labels or remove a turning pair."
             )
-        for attr in ("ground",):
+        for attr in ("ground", "output"):
             value = getattr(self, attr)
             if value is not None:
                 value = parse_link_id(value, attr)
@@ -160,6 +176,10 @@ class Mechanism:
         for x in inputs:
             need(x, "`inputs`")
         object.__setattr__(self, "inputs", inputs)
+        object.__setattr__(self, "planets", self._coerce_planets(self.planets, gps, need))
+        elements, schedule = validate_shifting(self.shift_elements, self.schedule, ids, self.ground)
+        object.__setattr__(self, "shift_elements", elements)
+        object.__setattr__(self, "schedule", schedule)
         if self.layout is not None:
             object.__setattr__(self, "layout", self._coerce_layout(self.layout, known))
         object.__setattr__(self, "_groups", groups)
@@ -190,6 +210,26 @@ class Mechanism:
                 raise DuplicateEdgeError(f"link {lk.id} is declared twice in `links`")
             seen.add(lk.id)
         return tuple(items)
+
+    @staticmethod
+    def _coerce_planets(planets, gear_pairs, need) -> tuple:
+        if isinstance(planets, Mapping):
+            items = list(planets.items())
+        elif isinstance(planets, tuple) and all(isinstance(i, tuple) and len(i) == 2 for i in planets):
+            items = list(planets)  # the stored form, from replace()
+        else:
+            raise DataFormatError(f"`planets` must be a mapping planet link -> number of planets, got {planets!r}")
+        gears = {g for gp in gear_pairs for g in gp.gears}
+        out = []
+        for k, n in items:
+            k = parse_link_id(k, "planets")
+            need(k, "`planets`")
+            if k not in gears:
+                raise DataFormatError(f"`planets` counts copies of link {k}, which is not a gear of any gear pair")
+            if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+                raise DataFormatError(f"`planets`: link {k} needs a whole number of planets (1 or more), got {n!r}")
+            out.append((k, n))
+        return tuple(out)
 
     @staticmethod
     def _coerce_layout(layout, known) -> tuple:
@@ -318,6 +358,10 @@ class Mechanism:
             ground=data.get("ground"),
             inputs=inputs,
             layout=data.get("layout"),
+            output=data.get("output"),
+            planets=data.get("planets") or {},
+            shift_elements=data.get("shift_elements") or (),
+            schedule=data.get("schedule") or (),
         )
 
     def to_dict(self) -> dict:
@@ -336,6 +380,14 @@ class Mechanism:
             out["inputs"] = list(self.inputs)
         if self.layout is not None:
             out["layout"] = {k: list(xy) for k, xy in self.layout}
+        if self.output is not None:
+            out["output"] = self.output
+        if self.planets:
+            out["planets"] = dict(self.planets)
+        if self.shift_elements:
+            out["shift_elements"] = [e.to_data() for e in self.shift_elements]
+        if self.schedule:
+            out["schedule"] = [g.to_data() for g in self.schedule]
         return out
 
     def replace(self, **changes) -> Mechanism:
@@ -411,6 +463,31 @@ class Mechanism:
     def axis_of(self, gear, carrier) -> str | None:
         """The axis label of *gear* on *carrier* (their coaxial label), or None."""
         return self._groups.coaxial_label(self.resolve(gear), self.resolve(carrier))
+
+    def planet_count(self, link) -> int:
+        """How many identical, equally spaced planets *link* stands for (1 unless ``planets`` says)."""
+        return dict(self.planets).get(self.resolve(link), 1)
+
+    def shift_element(self, name):
+        """The brake or clutch called *name*."""
+        for e in self.shift_elements:
+            if e.name == name:
+                return e
+        names = ", ".join(e.name for e in self.shift_elements) or "none declared"
+        raise UnknownLinkError(f"{self.name!r} has no shift element {name!r}; its elements are {names}")
+
+    def gear_state(self, name):
+        """The gear of the schedule called *name* (``"1st"``, ``"R"``)."""
+        for g in self.schedule:
+            if g.name == str(name):
+                return g
+        names = ", ".join(g.name for g in self.schedule) or "no schedule given"
+        raise UnknownLinkError(f"{self.name!r} has no gear {name!r} in its schedule; its gears are {names}")
+
+    def gear_constraints(self, name) -> dict:
+        """``{"held": [...], "joined": [...]}`` for the gear called *name*, ready for
+        ``gl.speeds(mech, **mech.gear_constraints("2nd"), ...)``."""
+        return self.gear_state(name).constraints(self.shift_elements)
 
     @property
     def redundant_turning_pairs(self) -> tuple[TurningPair, ...]:

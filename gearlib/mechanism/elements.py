@@ -212,8 +212,11 @@ class GearPair:
 
     Give ``teeth`` (and ``kind``), or a ``ratio`` ``e_{a,b}`` (a number or an expression),
     or both when they agree. Bevel pairs need Penaud's ``angles`` ``(theta_a, theta_b)``
-    with their teeth, or a signed ``ratio``. ``radii`` are pitch radii, used only by the
-    efficiency chapter; ``carrier`` is filled in by :class:`Mechanism` when left out.
+    with their teeth, or a signed ``ratio``. ``radii`` are pitch radii; or give the
+    ``module`` (transverse, in the unit of the radii), or the ``normal_module`` of a helical
+    pair with its ``helix_angle`` (transverse module = normal module / cos(helix angle)), and
+    the pitch radii follow from the teeth (:attr:`pitch_radii`). ``carrier`` is filled in by
+    :class:`Mechanism` when left out.
     """
 
     gears: tuple
@@ -224,6 +227,9 @@ class GearPair:
     angles: tuple | None = None
     radii: tuple[float, float] | None = None
     name: str | None = None
+    module: float | None = None
+    normal_module: float | None = None
+    helix_angle: sympy.Expr | None = None
 
     def __post_init__(self):
         a, b = _pair_of(self.gears, "gear pair", "gears")
@@ -263,12 +269,58 @@ class GearPair:
                 raise CarrierError(f"{where}: the carrier must be a third link, not gear {c} itself")
         if self.teeth is None and self.ratio is None:
             raise DataFormatError(f"{where}: give `teeth: [N_{a}, N_{b}]` or a gear `ratio`")
+        self._check_module(where)
         if self.kind == "bevel" and self.ratio is None and self.angles is None:
             raise DataFormatError(
                 f"{where}: a bevel pair needs Penaud's `angles: [theta_{a}, theta_{b}]` or a signed `ratio`; "
                 "the sign of a bevel ratio depends on the chosen axis directions"
             )
         self._check_ratio_agrees(where)
+
+    def _check_module(self, where):
+        if self.module is not None and self.normal_module is not None:
+            raise DataFormatError(f"{where}: give `module` (transverse) or `normal_module` with `helix_angle`, not both")
+        if self.helix_angle is not None and self.normal_module is None:
+            raise DataFormatError(f"{where}: a `helix_angle` goes with the `normal_module` of a helical pair")
+        for attr in ("module", "normal_module"):
+            if getattr(self, attr) is not None:
+                object.__setattr__(self, attr, parse_positive(getattr(self, attr), f"{where} {attr}"))
+        if self.helix_angle is not None:
+            beta = parse_real_expr(self.helix_angle, f"{where} helix_angle")
+            if not 0 <= float(beta) < float(sympy.pi / 2):
+                raise DataFormatError(
+                    f"{where}: helix_angle {self.helix_angle!r} must be at least 0 and under 90 degrees; "
+                    "write degrees as 20*deg")
+            object.__setattr__(self, "helix_angle", beta)
+        if (self.module is not None or self.normal_module is not None) and self.teeth is None:
+            raise DataFormatError(f"{where}: a module gives pitch radii only with `teeth`")
+        if self.radii is not None and self.transverse_module is not None:
+            from_module = tuple(self.transverse_module * n / 2 for n in self.teeth)
+            if any(abs(r - m) > 1e-9 * max(r, m) for r, m in zip(self.radii, from_module)):
+                raise DataFormatError(
+                    f"{where}: radii {list(self.radii)} disagree with module and teeth, which give "
+                    f"{[round(r, 6) for r in from_module]}; give one of them")
+
+    @property
+    def transverse_module(self) -> float | None:
+        """The transverse module: ``module``, or ``normal_module / cos(helix_angle)``; None if neither."""
+        if self.module is not None:
+            return self.module
+        if self.normal_module is not None:
+            beta = 0.0 if self.helix_angle is None else float(self.helix_angle)
+            return self.normal_module / float(sympy.cos(beta))
+        return None
+
+    @property
+    def pitch_radii(self) -> tuple[float, float] | None:
+        """Pitch radii: ``radii``, or the transverse module times the teeth over 2; None when
+        the data give neither."""
+        if self.radii is not None:
+            return self.radii
+        m = self.transverse_module
+        if m is None:
+            return None
+        return (m * self.teeth[0] / 2, m * self.teeth[1] / 2)
 
     def _teeth_ratio(self):
         a_n, b_n = self.teeth
@@ -337,11 +389,14 @@ class GearPair:
             return data
         if not isinstance(data, Mapping):
             raise DataFormatError(f"{where}: expected a mapping such as {{gears: [1, 2], teeth: [20, 40]}}, got {data!r}")
-        fields = ("gears", "teeth", "ratio", "carrier", "type", "kind", "angles", "radii", "name")
+        fields = ("gears", "teeth", "ratio", "carrier", "type", "kind", "angles", "radii", "name", "module",
+                  "normal_module", "helix_angle")
         _check_keys(data, fields, where)
         if "gears" not in data:
             raise DataFormatError(f"{where}: missing `gears: [a, b]`")
         kw = {k: v for k, v in data.items() if k not in ("type", "kind")}
+        if "type" in data and "kind" in data and data["type"] != data["kind"]:
+            raise DataFormatError(f"{where}: `type: {data['type']}` and `kind: {data['kind']}` disagree; give one")
         kind = data.get("type", data.get("kind", "external"))
         return cls(kind=kind, **kw)
 
@@ -361,4 +416,10 @@ class GearPair:
             out["carrier"] = self.carrier
         if self.name:
             out["name"] = self.name
+        if self.module is not None:
+            out["module"] = self.module
+        if self.normal_module is not None:
+            out["normal_module"] = self.normal_module
+        if self.helix_angle is not None:
+            out["helix_angle"] = expr_to_data(self.helix_angle)
         return out
