@@ -231,6 +231,9 @@ def test_pages_with_widgets_embed_their_state_and_load_the_local_manager(pages):
         models = json.loads(state.group(1))["state"]
         for view in views:
             assert json.loads(view)["model_id"] in models, f"{_rel(path)}: a widget view has no model"
+        # a snapshot cannot recompute: its sliders and lists are greyed out, not live-looking
+        live = [m["model_name"] for m in models.values() if m["state"].get("disabled") is False]
+        assert not live, f"{_rel(path)}: widget controls left enabled in the static book: {live}"
         scripts = [url for kind, url in page.assets if kind == "script.src"]
         for local in ("requirejs/require.js", "gearlib-widgets.js", "html-manager/embed-amd.js"):
             assert any(f"_static/{local}" in url for url in scripts), f"{_rel(path)} does not load {local}"

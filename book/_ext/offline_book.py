@@ -10,11 +10,15 @@ Loaded by ``book/_config.yml`` (``sphinx.local_extensions``). It
   is a JavaScript error), and drops sphinx-thebe's loader, which would fetch Thebe from a
   CDN and is unused while the book has no Thebe launch button;
 * warns (an error under ``-W``) about every page that still loads a script or a
-  stylesheet from another host.
+  stylesheet from another host;
+* disables the controls of every embedded widget: a widget in the static book is the
+  snapshot taken when the book was built, and a slider that moves without changing the
+  picture would mislead (the caption under it says how to run it live).
 """
 
 from __future__ import annotations
 
+import json
 import os
 import pathlib
 import re
@@ -76,6 +80,29 @@ def tidy_assets(app, pagename, templatename, context, doctree):
         assets[:] = kept
 
 
+WIDGET_STATE = re.compile(r'(<script type="application/vnd\.jupyter\.widget-state\+json">)(.*?)(</script>)', re.S)
+
+
+def _disabled(match) -> str:
+    state = json.loads(match.group(2))
+    for model in state.get("state", {}).values():
+        if "disabled" in model.get("state", {}):
+            model["state"]["disabled"] = True
+    return match.group(1) + json.dumps(state) + match.group(3)
+
+
+def disable_widget_controls(app, exception):
+    """Every widget control of every built page disabled (a snapshot cannot recompute)."""
+    if exception is not None or app.builder.format != "html":
+        return
+    for page in sorted(pathlib.Path(app.outdir).rglob("*.html")):
+        if "_static" in page.parts:
+            continue
+        text = page.read_text(encoding="utf-8")
+        if "widget-state+json" in text:
+            page.write_text(WIDGET_STATE.sub(_disabled, text), encoding="utf-8")
+
+
 def report_remote_assets(app, exception):
     """Warn about every built page that loads a script or stylesheet from another host."""
     if exception is not None or app.builder.format != "html":
@@ -97,4 +124,5 @@ def setup(app):
     app.connect("builder-inited", check_vendored_assets)
     app.connect("html-page-context", tidy_assets, priority=900)
     app.connect("build-finished", report_remote_assets)
+    app.connect("build-finished", disable_widget_controls)
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
