@@ -10,14 +10,13 @@ no room is named in the key under the axes instead.
 
 from __future__ import annotations
 
-import math
 
 TICK = {"fundamental": 0.45, "harmonic": 0.32, "sideband": 0.2}
 WIDTH = {"fundamental": 1.6, "harmonic": 1.0, "sideband": 0.7}
 
 
 def _lanes(table, families):
-    from .monitoring import FAMILIES
+    from ._faults import FAMILIES
 
     present = [f for f in FAMILIES if any(r.family == f for r in table.lines)]
     present += sorted({r.family for r in table.lines} - set(present))
@@ -33,7 +32,7 @@ def map_size(table, families=None) -> tuple[float, float]:
 
 
 def _rank(r) -> str:
-    return "sideband" if r.sideband else "fundamental" if r.harmonic == 1 else "harmonic"
+    return "sideband" if r.kind == "sideband" else "fundamental" if r.harmonic == 1 else "harmonic"
 
 
 def plot_fault_map(table, ax=None, *, families=None, fmin=None, fmax=None, xscale=None, labels=True, title=None,
@@ -63,7 +62,7 @@ def plot_fault_map(table, ax=None, *, families=None, fmin=None, fmax=None, xscal
     # shaded bands: the span of each sideband family around its centre, the tolerance of each line
     spans: dict = {}
     for r in rows:
-        if r.sideband:
+        if r.kind == "sideband":
             key = (r.family, r.centre, r.spacing)
             a, b = spans.get(key, (r.frequency, r.frequency))
             spans[key] = (min(a, r.frequency), max(b, r.frequency))

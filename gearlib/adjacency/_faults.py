@@ -10,6 +10,10 @@ from __future__ import annotations
 from .bearings import bearing_frequencies
 from .planetary import tooth_factors
 
+FAMILIES = ("shaft", "mesh", "planet pass", "sun fault", "central gear fault", "ring fault", "planet fault",
+            "hunting tooth", "assembly phase", "outer race", "inner race", "rolling element", "cage")
+"""The families of lines, in the order of the table and of the spectrum map's lanes."""
+
 
 def name_of(mech, link) -> str:
     """``sun (input shaft)`` for a named link, else ``link 3``."""

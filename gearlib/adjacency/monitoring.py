@@ -40,6 +40,7 @@ import io
 from dataclasses import dataclass, field
 
 from . import _faults
+from ._faults import FAMILIES
 from ._units import convert_inputs, to_hz, unit_name
 from .bearings import with_bearings
 from .planetary import planetary_sets
@@ -48,9 +49,6 @@ from ..mechanism.data import Mechanism
 
 __all__ = ["FaultLine", "FaultTable", "fault_table", "plot_fault_map", "FAMILIES"]
 
-FAMILIES = ("shaft", "mesh", "planet pass", "sun fault", "central gear fault", "ring fault", "planet fault",
-            "hunting tooth", "assembly phase", "outer race", "inner race", "rolling element", "cage")
-"""The families of lines, in the order of the table and of the spectrum map's lanes."""
 
 
 @dataclass(frozen=True)
@@ -87,7 +85,7 @@ class FaultLine:
 
     @property
     def is_fundamental(self) -> bool:
-        return self.harmonic == 1 and self.sideband == 0
+        return self.harmonic == 1 and self.sideband == 0 and self.kind != "sideband"
 
     def to_dict(self, tolerance: float = 0.0) -> dict:
         return {"family": self.family, "kind": self.kind, "name": self.name, "hz": self.frequency, "rpm": self.rpm,
