@@ -53,9 +53,9 @@ __all__ = ["FaultLine", "FaultTable", "fault_table", "plot_fault_map", "FAMILIES
 
 @dataclass(frozen=True)
 class FaultLine:
-    """One line of a :class:`FaultTable`.
+    """One line of a :class:`~gearlib.FaultTable`.
 
-    ``family`` is one of :data:`FAMILIES`; ``kind`` names the line (``GMF``, ``BPFO``,
+    ``family`` is one of ``gl.adjacency.FAMILIES``; ``kind`` names the line (``GMF``, ``BPFO``,
     ``2xBSF``, ``sideband``, ...); ``frequency`` is in Hz and ``order`` in orders of the
     reference shaft; ``harmonic`` is ``m`` of ``m x`` the fundamental; a sideband has
     ``sideband`` = ``k`` (negative below), ``spacing`` (Hz) and ``centre``, the name of the
@@ -165,7 +165,7 @@ class FaultTable:
         }
 
     def to_csv(self) -> str:
-        """One row per line, with a header (columns :data:`CSV_COLUMNS`)."""
+        """One row per line, with a header (columns ``CSV_COLUMNS``)."""
         out = io.StringIO()
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(CSV_COLUMNS)
@@ -336,7 +336,7 @@ def _reference(mech, sol, w, reference):
 
 def plot_fault_map(table: FaultTable, ax=None, *, families=None, fmin=None, fmax=None, xscale=None, labels=True,
                    title=None, fontsize: float = 7):
-    """The spectrum map of a :class:`FaultTable`: one lane per family, a tick per line
+    """The spectrum map of a :class:`~gearlib.FaultTable`: one lane per family, a tick per line
     (fundamentals full height, harmonics shorter, sidebands shortest), each sideband
     family's band shaded, labels that never overlap (lines whose label finds no room are
     numbered and named in a key under the axes). The vertical axis carries the families,

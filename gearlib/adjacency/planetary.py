@@ -5,19 +5,19 @@ and *central gears* (suns, rings, the side gears of a differential) on the carri
 axis. The central axis is the carrier's axis shared with a link that is not one of its
 gears (the housing, a shaft), or with the ground; failing that, the axis that holds most
 of its gears. A planet link may stand for ``N`` identical, equally spaced planets
-(``planets: {2: 3}`` in the mechanism, :meth:`gearlib.Mechanism.planet_count`); separate
+(``planets: {2: 3}`` in the mechanism, ``Mechanism.planet_count``); separate
 planet links on one carrier (the differential's two planets) are taken as equally spaced
 too. A carrier that does not turn relative to the ground and holds a single copy of each
 gear is an ordinary train on fixed axes, not a planetary set.
 
 Per relative turn (relative to the carrier) a tooth of a central gear meets every planet
 that meshes with it, and a planet tooth meets each gear it meshes with (the sun on one
-flank, the ring on the other): :attr:`PlanetarySet.contacts`.
+flank, the ring on the other): ``PlanetarySet.contacts``.
 
 Two tooth numbers ``Z1, Z2`` with common factor ``n_a = gcd(Z1, Z2)`` mesh in ``n_a``
 assembly phases: a tooth meets only every ``n_a``-th tooth of the other gear. The
 assembly-phase frequency is ``f_m / n_a`` and the hunting-tooth frequency, at which one
-pair of teeth meets again, ``f_m n_a / (Z1 Z2) = f_m / lcm(Z1, Z2)`` (:func:`tooth_factors`).
+pair of teeth meets again, ``f_m n_a / (Z1 Z2) = f_m / lcm(Z1, Z2)`` (``tooth_factors``).
 
 >>> import gearlib as gl
 >>> stage = gl.catalog.load("planetary_stage")
