@@ -52,6 +52,8 @@ def split_speed(value, where: str = "speed"):
             value, unit = m.group("value").strip(), _ALIASES[m.group("unit").lower()]
         elif (tail := re.search(r"[A-Za-z][A-Za-z/^]*$", value.strip())) and tail.group(0) not in ("pi", "E"):
             tail = tail.group(0)
+            if tail.lower() in ("inf", "infinity", "nan"):
+                raise InputError(f"{where} {value!r} is not a number; a speed must be finite")
             raise InputError(f"{where} {value!r}: unknown unit {tail!r}; write the speed as 1480rpm, 24.7Hz or "
                              "155rad/s (or a bare number)")
     try:
