@@ -326,7 +326,7 @@ CORNER = ("frequencies", "car_differential", "--ground", "1", "--input", "3=26",
 
 
 def test_cli_frequencies_json_paper_convention():
-    out = run(*CORNER, "--convention", "paper", "--json")
+    out = run(*CORNER, "--convention", "paper", "--json", "--contacts")  # the paper's per-contact table
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
     freqs = sorted({round(r["frequency"], 1) for r in data["rows"]})
@@ -337,11 +337,14 @@ def test_cli_frequencies_with_a_bearings_file(tmp_path):
     path = tmp_path / "b.yaml"
     path.write_text("- {pair: [1, 2], name: pinion bearing, pitch_diameter: 40, ball_diameter: 8, balls: 9, "
                     "inner: 2}\n")
-    result = run(*CORNER, "--bearings", str(path))
+    result = run(*CORNER, "--bearings", str(path), "--contacts")
     assert result.returncode == 0, result.stderr
     out = result.stdout
     # the pinion turns at 140 rad/s: BPFO = 4.5 (1 - 0.2) 140 = 504
     assert "504" in out and "pinion bearing" in out
+    # the fault table gives it in Hz (the inputs are in rad/s): 504 / (2 pi) = 80.21
+    result = run(*CORNER, "--bearings", str(path))
+    assert "BPFO pinion bearing" in result.stdout and "80.214" in result.stdout
 
 
 @pytest.mark.parametrize("extra, text", [

@@ -8,6 +8,9 @@ tooth-defect and bearing frequencies off the speeds. This package holds
   normalisations, speed ratios, directions, readable matrices;
 * ``frequencies`` and ``bearings`` - contact frequencies of every mesh and rolling
   bearing (:func:`~gearlib.frequency_table`), bearing data given apart from a mechanism;
+* ``monitoring`` and ``planetary`` - condition monitoring: the fault frequencies of any
+  gearbox in Hz, rpm and orders (:func:`~gearlib.fault_table`), planetary sets found from the
+  graph (:func:`~gearlib.planetary_sets`), harmonics, sidebands and the spectrum map;
 * ``cornering`` - the car differential on the road: wheel speeds, frequencies, a widget.
 
 The kinematic solver ``gl.speeds(..., method="nullspace")`` of chapter 1 uses
@@ -24,6 +27,8 @@ EXPORTS = {
     "frequencies": ("FrequencyRow", "FrequencyTable", "gear_frequencies", "frequency_table", "plot_spectrum",
                     "CONVENTIONS"),
     "bearings": ("BearingFrequencies", "bearing_frequencies", "read_bearings", "load_bearings", "with_bearings"),
+    "monitoring": ("FaultLine", "FaultTable", "fault_table", "plot_fault_map", "FAMILIES"),
+    "planetary": ("PlanetarySet", "planetary_sets", "tooth_factors"),
     "cornering": ("wheel_speeds", "CorneringExplorer", "cornering_explorer", "plot_cornering", "WHEEL_RADIUS",
                   "TRACK"),
 }
@@ -33,7 +38,8 @@ TOP = (
     "reduced_basis", "same_subspace", "constraint_rows", "direction", "show_link_table", "show_matrix",
     "frequency_table", "FrequencyTable", "FrequencyRow", "bearing_frequencies", "BearingFrequencies",
     "plot_spectrum", "load_bearings", "with_bearings", "wheel_speeds", "cornering_explorer", "plot_cornering",
-    "bearings", "cornering", "frequencies",
+    "fault_table", "FaultTable", "FaultLine", "plot_fault_map", "planetary_sets", "PlanetarySet",
+    "bearings", "cornering", "frequencies", "monitoring",
 )
 
 __getattr__, __dir__, __all__ = lazy(__name__, EXPORTS)

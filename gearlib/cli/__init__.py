@@ -31,7 +31,10 @@ def _commands() -> dict:
 
 
 class _Parser(argparse.ArgumentParser):
+    last_error = None  # the message of the last usage error, for --json
+
     def error(self, message):
+        _Parser.last_error = f"{self.prog}: error: {message}"
         self.print_usage(sys.stderr)
         self.exit(2, f"{self.prog}: error: {message}\n")
 
@@ -48,14 +51,43 @@ def build_parser():
     return parser
 
 
-def main(argv=None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
+def _fail(message: str, as_json: bool) -> int:
+    """One line on stderr, and with ``--json`` a JSON object on stdout too; status 2."""
+    print(message, file=sys.stderr)
+    if as_json:
+        print_json({"error": message})
+    return 2
+
+
+def _quiet_broken_pipe() -> int:
+    """The reader went away (``| head``): stop quietly, without a traceback at exit."""
+    import os
+
     try:
-        return int(args._run(args) or 0)
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):  # stdout without a file descriptor (captured in a test)
+        pass
+    return 0
+
+
+def main(argv=None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    as_json = "--json" in argv
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exit_:
+        if as_json and exit_.code not in (0, None):
+            print_json({"error": _Parser.last_error or "invalid arguments"})
+        raise
+    try:
+        status = int(args._run(args) or 0)
+        sys.stdout.flush()
+        return status
+    except BrokenPipeError:
+        return _quiet_broken_pipe()
     except GearlibError as err:
-        print(f"gearlib {args.command}: error: {err}", file=sys.stderr)
-        return 2
+        return _fail(f"gearlib {args.command}: error: {err}", as_json)
     except (OSError, RecursionError) as err:
-        print(f"gearlib {args.command}: error: {err}", file=sys.stderr)
-        return 2
+        return _fail(f"gearlib {args.command}: error: {err}", as_json)
