@@ -426,3 +426,44 @@ def test_drawing_takes_an_axes_and_returns_it():
     assert any("common sun" in t.get_text() for t in ax.texts)
     assert fig.get_facecolor()[:3] == (1.0, 1.0, 1.0) and ax.get_facecolor()[:3] == (1.0, 1.0, 1.0)
     plt.close(fig)
+
+
+# ----------------------------------------------------------------------------- command line
+def test_the_sketch_command_writes_svg_png_and_levers(tmp_path):
+    from cli_tools import run
+
+    out = tmp_path / "simpson.svg"
+    r = run("sketch", "simpson", "--output", str(out))
+    assert r.returncode == 0, r.stderr
+    assert out.read_text().lstrip().startswith(("<?xml", "<svg")) and "</svg>" in out.read_text()
+    path = tmp_path / "eight.yaml"
+    gl.save(eight_speed(), path)
+    png = tmp_path / "eight.png"
+    r = run("sketch", str(path), "-o", str(png), "--names")
+    assert r.returncode == 0 and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    r = run("sketch", str(path), "-o", str(tmp_path / "levers.pdf"), "--lever", "--gear", "3rd")
+    assert r.returncode == 0 and (tmp_path / "levers.pdf").read_bytes()[:4] == b"%PDF"
+    assert "lever diagram (4 levers)" in r.stdout
+
+
+@pytest.mark.parametrize("args, message", [
+    (["simpson", "-o", "x.txt"], "give a file ending in .svg"),
+    (["simpson", "-o", "x.png", "--gear", "1st"], "add --lever"),
+    (["compound_train", "-o", "x.png", "--lever"], "no planetary set"),
+    (["EIGHT", "-o", "x.png", "--lever", "--gear", "ninth"], "no gear 'ninth'"),
+    (["SPATIAL", "-o", "x.png"], "spatial train"),
+])
+def test_the_sketch_command_says_what_is_wrong_in_one_line(tmp_path, args, message):
+    from cli_tools import run
+
+    gl.save(eight_speed(), tmp_path / "eight.yaml")
+    data = gl.catalog.load("penaud_example_1").to_dict()
+    data.pop("layout")
+    data["links"][5] = "arm"
+    data["turning_pairs"].append([3, 5, "e"])
+    gl.save(gl.Mechanism.from_dict(data), tmp_path / "spatial.yaml")
+    args = [str(tmp_path / "eight.yaml") if a == "EIGHT" else str(tmp_path / "spatial.yaml") if a == "SPATIAL"
+            else str(tmp_path / a) if a.startswith("x.") else a for a in args]
+    r = run("sketch", *args)
+    assert r.returncode == 2
+    assert len(r.stderr.strip().splitlines()) == 1 and message in r.stderr and "Traceback" not in r.stderr

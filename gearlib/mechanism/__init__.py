@@ -35,7 +35,8 @@ EXPORTS = {
     "mobility": ("Mobility", "dof", "redundant_gear_pairs", "choose_inputs"),
     "display": ("Number", "number"),
     "plot": ("style", "graph_layout", "draw_graph", "plot_speeds", "plot_ratio_sweep"),
-    "sketch": ("Sketch", "Block", "Line", "AxisLine", "Symbol", "Label", "sketch_layout", "draw_sketch"),
+    "sketch": ("Sketch", "Block", "Line", "AxisLine", "Symbol", "Label", "sketch_layout", "draw_sketch",
+               "figure_size"),
     "widgets": ("Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png",
                 "encode_png"),
 }

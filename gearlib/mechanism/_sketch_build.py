@@ -132,8 +132,7 @@ class _Builder:
             if e.kind == "brake":
                 m = e.links[0]
                 if m in self.routed:
-                    ports.append(Port(m, "brake", {"out": (None, INF), "in": (None, INF)},
-                                      lanes=self._lanes_near([m]), name=e.name))
+                    ports.append(Port(m, "brake", {"auto": (None, INF)}, lanes=self._lanes_near([m]), name=e.name))
                 else:
                     us = self._units_of_link(m)
                     ports.append(Port(m, "item", {"-": (None, 0.0)}, lanes=(max(us) + 1,), name=e.name))
@@ -143,8 +142,8 @@ class _Builder:
                     raise GeometryError(f"clutch {e.name!r} joins links {u} and {v}, which do not turn about one axis; "
                                         "a clutch joins two coaxial members")
                 if u in self.routed and v in self.routed:
-                    ports.append(Port(u, "clutch", {"in": (None, 0.0), "out": (None, 0.0)}, lanes=self._lanes_near([u, v]),
-                                      name=e.name, other=v, other_zones=("in", "out")))
+                    ports.append(Port(u, "clutch", {"auto": (None, 0.0)}, lanes=self._lanes_near([u, v]), name=e.name,
+                                      other=v))
                 else:
                     us = self._units_of_link(u) + self._units_of_link(v)
                     ports.append(Port(u, "item", {"-": (None, 0.0)}, lanes=(max(us) + 1,), name=e.name, other=v))
@@ -163,7 +162,7 @@ class _Builder:
         for p in ports:
             if "in" in p.at and p.kind == "gear" and p.at["in"][1] > 1e-9:
                 lows.append(p.at["in"][1])
-        inner_top = 0.72 * min(lows, default=self.S)
+        inner_top = 0.85 * min(lows, default=self.S)
         tops = [q[1] for q in blocks] + [q[1] for u in self.g.units for pin in u.pins.values() for q in pin]
         tops += [a.offset + 0.3 * self.S for a in parts.axes.values() if a.parent is not None and not a.inclined
                  and not self.axis_units.get(a.group)]

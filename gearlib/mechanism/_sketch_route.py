@@ -31,7 +31,6 @@ class Port:
     lanes: tuple = ()
     name: str = ""
     other: object = None            # a clutch's second member
-    other_zones: tuple = ()
     axis: int | None = None         # an arm: the axis it holds
     extra: dict | None = None       # lane -> gears its pin would pass through there (counted as crossings)
 
@@ -70,8 +69,7 @@ class Router:
         out = []
         for zone, (x, _) in p.at.items():
             lanes = p.lanes if x is None else (None,)
-            others = p.other_zones if p.kind == "clutch" else (None,)
-            out += [(lane, zone, other) for lane in lanes for other in others]
+            out += [(lane, zone, None) for lane in lanes]
         return out
 
     # ------------------------------------------------------------------ one arrangement
@@ -90,12 +88,29 @@ class Router:
         lane_arm = {}
         for k, p in enumerate(self.ports):
             lane, zone, other = opts[k]
-            if p.kind in ("gear", "arm", "brake", "clutch"):
+            if p.kind in ("gear", "arm"):
                 zones.setdefault(p.member, set()).add(zone)
-            if p.kind == "clutch":
-                zones.setdefault(p.other, set()).add(other)
             if p.kind == "arm" and lane is not None:
                 lane_arm.setdefault(p.member, k)
+        auto = {}
+        for k, p in enumerate(self.ports):   # a brake or a clutch starts from a line its member has
+            if p.kind == "brake":
+                mz = zones.get(p.member) or {"in"}
+                auto[k] = ("out" if "out" in mz else "in", None)
+            elif p.kind == "clutch":
+                zu, zv = zones.get(p.member) or {"in"}, zones.get(p.other) or {"in"}
+                common = zu & zv
+                if common:
+                    z = "in" if "in" in common else "out"
+                    auto[k] = (z, z)
+                else:
+                    auto[k] = (min(zu), min(zv))
+        for k, (zu, zv) in auto.items():
+            lane = opts[k][0]
+            opts[k] = (lane, zu, zv)
+            zones.setdefault(self.ports[k].member, set()).add(zu)
+            if zv is not None:
+                zones.setdefault(self.ports[k].other, set()).add(zv)
         both = {m for m, z in zones.items() if len(z) == 2}
         n_lanes = len(self.units) + 1
         in_lane = [[] for _ in range(n_lanes)]
@@ -125,7 +140,7 @@ class Router:
                 if p.member in both:
                     risers[p.member] = slot[lane_arm[p.member]] if p.member in lane_arm else slot[k]
                 continue
-            x_rel, py = p.at[zone]
+            x_rel, py = p.at.get(zone) or p.at["auto"]
             px = slot[k] if lane is not None else unit_x[p.unit] + x_rel
             placed.append((p, px, py, zone, other))
             if p.kind in ("item", "toframe"):

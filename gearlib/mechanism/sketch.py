@@ -50,7 +50,7 @@ from dataclasses import dataclass
 from ..errors import DataFormatError
 from .data import Mechanism
 
-__all__ = ["Block", "Line", "AxisLine", "Symbol", "Label", "Sketch", "sketch_layout", "draw_sketch"]
+__all__ = ["Block", "Line", "AxisLine", "Symbol", "Label", "Sketch", "sketch_layout", "draw_sketch", "figure_size"]
 
 
 @dataclass(frozen=True)
@@ -204,9 +204,7 @@ def draw_sketch(mech, ax=None, *, title=None, names=False, font_size=8, colors=T
     if ax is None:
         import matplotlib.pyplot as plt
 
-        aspect = (y1 - y0) / (x1 - x0)
-        w = 6.4 if aspect < 1.1 else max(3.2, 6.0 / aspect)
-        _, ax = plt.subplots(figsize=(w, w * aspect + 0.5), facecolor="white")
+        _, ax = plt.subplots(figsize=figure_size(sk), facecolor="white")
     ground = mech.ground if isinstance(mech, Mechanism) else None
     order = list(dict.fromkeys([lb.link for lb in sk.labels]))
     color = {link: ("0.35" if link == ground else _PALETTE[i % len(_PALETTE)]) if colors else "black"
@@ -243,6 +241,14 @@ def draw_sketch(mech, ax=None, *, title=None, names=False, font_size=8, colors=T
     ax.axis("off")
     ax.set_title(sk.name if title is None else title, fontsize=font_size + 2)
     return ax
+
+
+def figure_size(sk: Sketch) -> tuple:
+    """``(width, height)`` in inches that shows *sk* at a readable scale on a page."""
+    x0, x1, y0, y1 = sk.bounds()
+    aspect = (y1 - y0) / max(x1 - x0, 1e-9)
+    w = 6.4 if aspect < 1.1 else max(3.2, 6.0 / aspect)
+    return (w, w * aspect + 0.5)
 
 
 def _spread(ax, labels, texts, font_size) -> list:
