@@ -247,7 +247,7 @@ def lever_diagram(mech: Mechanism) -> LeverDiagram:
     """The lever diagram of *mech*'s planetary sets: one lever per set, sets that share two members
     combined (see the module docstring).
 
-    Raises :class:`~gearlib.MechanismError` when the mechanism has no planetary set, or a set
+    Raises :class:`~gearlib.errors.MechanismError` when the mechanism has no planetary set, or a set
     whose gear ratios are symbolic or complex.
     """
     if not isinstance(mech, Mechanism):

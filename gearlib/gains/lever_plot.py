@@ -1,6 +1,6 @@
 """Drawing of lever diagrams (chapter 3): levers side by side, a state's speeds as arrows.
 
-:func:`lever_geometry` computes what :func:`draw_levers` draws (nodes, arrow tips, velocity
+:func:`~gearlib.gains.lever_geometry` computes what :func:`~gearlib.draw_levers` draws (nodes, arrow tips, velocity
 lines, brakes and clutches), so that a test can check it: each lever is a vertical bar, each
 member a node at its place along it, each speed a horizontal arrow from its node, and the
 arrows of one lever end on one straight line, the velocity line.
@@ -17,7 +17,7 @@ _REACH = 0.38   # the longest arrow, as a fraction of the gap
 
 
 def lever_geometry(levers, state=None) -> dict:
-    """What :func:`draw_levers` draws, in drawing coordinates.
+    """What :func:`~gearlib.draw_levers` draws, in drawing coordinates.
 
     Returns a mapping with ``nodes``, a list of ``(lever, link, role, x, y)``; ``speeds``,
     ``{link: speed}`` (floats, or empty without a state); ``tips``, ``(lever, link, x, y)`` where

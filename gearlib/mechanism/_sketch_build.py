@@ -447,11 +447,12 @@ class _Builder:
                 done.add(link)
                 t = 0.5 if kind != "housing" else 0.04
                 self.out["labels"].append((link, self._text(link), (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))))
-        for _kind, _name, links, _segs, _hatch, anchor, _copy in self.out["symbols"]:
+        for kind, _name, links, _segs, _hatch, anchor, _copy in self.out["symbols"]:
             for link in links:
                 if link not in done and link == self.ground:
                     done.add(link)
-                    self.out["labels"].append((link, self._text(link), anchor))
+                    below = 3.2 * self.gap if kind == "bearing" else 0.0   # under its bearing mark
+                    self.out["labels"].append((link, self._text(link), (anchor[0], anchor[1] - below)))
         missing = [x for x in mech.link_ids if x not in done]
         if missing:   # nothing else drew it (a frame with nothing fixed to it): a bearing symbol
             for link in missing:

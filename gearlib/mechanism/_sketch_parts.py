@@ -119,12 +119,14 @@ class Parts:
         self.pair_gears: list[tuple[int, int]] = []
         self.ratios: list = []   # |r_b / r_a| when the pair gives a numeric ratio only, else None
         by_key: dict = {}
+        relative: set = set()    # pairs sized by their teeth alone
         for i, gp in enumerate(mech.gear_pairs):
             a, b = gp.gears
             ga, gb = self._gear_groups(gp)
             radii = gp.pitch_radii
             if radii is None and gp.teeth is not None:
                 radii = (module * gp.teeth[0] / 2, module * gp.teeth[1] / 2)
+                relative.add(i)
             ra, rb = (float(radii[0]), float(radii[1])) if radii is not None else (None, None)
             self.ratios.append(self._ratio(gp) if radii is None else None)
             ring_a = ring_b = False
@@ -137,6 +139,40 @@ class Parts:
             self.gears[ia].meshes.append((i, ib))
             self.gears[ib].meshes.append((i, ia))
             self.pair_gears.append((ia, ib))
+        self._enlarge(relative)
+
+    def _enlarge(self, relative):
+        """Teeth fix sizes within a set of gears in mesh (one module), not between sets that share
+        no gear off the main axis: such a set, sized by teeth alone and drawn under 40 % of the
+        largest gear, is drawn larger (a car differential's spider beside its crown wheel)."""
+        parent = list(range(len(self.gears)))
+
+        def find(i):
+            while parent[i] != i:
+                parent[i] = parent[parent[i]]
+                i = parent[i]
+            return i
+
+        for ia, ib in self.pair_gears:
+            parent[find(ia)] = find(ib)
+        first: dict = {}
+        for g in self.gears:   # a link off the main axis (a compound planet, a layshaft) ties its sets
+            if g.group != self.root:
+                parent[find(g.index)] = find(first.setdefault((g.link, self.turn[g.link]), g.index))
+        sets: dict = {}
+        for g in self.gears:
+            sets.setdefault(find(g.index), []).append(g)
+        sized = [g.radius for g in self.gears if g.radius is not None]
+        if not sized or len(sets) < 2:
+            return
+        top = max(sized)
+        for gs in sets.values():
+            pairs = {i for g in gs for i, _ in g.meshes}
+            radii = [g.radius for g in gs if g.radius is not None]
+            if pairs <= relative and radii and max(radii) < 0.4 * top:
+                k = 0.4 * top / max(radii)
+                for g in gs:
+                    g.radius *= k
 
     def _gear_groups(self, gp):
         a, b = gp.gears

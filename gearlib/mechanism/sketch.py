@@ -1,7 +1,7 @@
 """Kinematic sketches: a mechanism drawn as an engineer draws it, from its data alone.
 
-:func:`draw_sketch` draws the conventional stick diagram of any mechanism given as data;
-:func:`sketch_layout` computes the same drawing as geometry (:class:`Sketch`), with nothing
+:func:`~gearlib.draw_sketch` draws the conventional stick diagram of any mechanism given as data;
+:func:`~gearlib.sketch_layout` computes the same drawing as geometry (:class:`~gearlib.Sketch`), with nothing
 drawn, so that a test, or a reader, can check it.
 
 What the drawing shows, and where it comes from in the data:
@@ -15,8 +15,10 @@ What the drawing shows, and where it comes from in the data:
   train) is a **full section**, the axes one above the other at their centre distances (the
   developed view), every shaft held by **bearings** in the frame;
 * the **gears** as blocks whose heights follow the pitch radii (``radii``, or module and teeth;
-  teeth alone are relative sizes, a symbolic ratio takes a size that closes its centre
-  distance): a sun from its shaft to its pitch radius, a ring outwards from its pitch radius,
+  teeth alone are relative sizes within a set of gears in mesh, whose module the data leave
+  free: such a set drawn under 40 % of the largest gear is drawn larger; a symbolic ratio takes
+  a size that closes its centre distance): a sun from its shaft to its pitch radius, a ring
+  outwards from its pitch radius,
   a planet centred on its axis, off the main axis on its carrier's **pin**; a compound
   (stepped) planet as two blocks on one pin, a double-pinion set as two pins; **bevel** gears
   as frustums about their common cone apex, inclined by their shaft angle (from the pitch radii
@@ -29,7 +31,7 @@ What the drawing shows, and where it comes from in the data:
 * each link's id once, on its first block (or its arm, or its line).
 
 A spatial train, with an axis held by a link that itself turns about an inclined axis, cannot
-be drawn in one plane: :func:`sketch_layout` raises :class:`~gearlib.GeometryError` and says
+be drawn in one plane: :func:`~gearlib.sketch_layout` raises :class:`~gearlib.errors.GeometryError` and says
 why, rather than draw something wrong. So do bevel gears whose pitch radii cannot meet.
 
 >>> import gearlib as gl
@@ -143,14 +145,14 @@ class Sketch:
         return min(xs), max(xs), min(ys), max(ys)
 
     def plot(self, ax=None, **kw):
-        """Draw it: :func:`draw_sketch`."""
+        """Draw it: :func:`~gearlib.draw_sketch`."""
         return draw_sketch(self, ax=ax, **kw)
 
 
 def sketch_layout(mech: Mechanism) -> Sketch:
     """The kinematic sketch of *mech* as geometry (nothing is drawn): see the module docstring.
 
-    Raises :class:`~gearlib.GeometryError` when the mechanism cannot be drawn in one plane, or
+    Raises :class:`~gearlib.errors.GeometryError` when the mechanism cannot be drawn in one plane, or
     its bevel gears cannot meet.
     """
     from ._sketch_build import build
@@ -174,7 +176,7 @@ _PALETTE = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#
 
 
 def draw_sketch(mech, ax=None, *, title=None, names=False, font_size=8, colors=True):
-    """Draw the kinematic sketch of *mech* (a :class:`~gearlib.Mechanism` or a :class:`Sketch`).
+    """Draw the kinematic sketch of *mech* (a :class:`~gearlib.Mechanism` or a :class:`~gearlib.Sketch`).
 
     Parameters
     ----------
@@ -185,8 +187,11 @@ def draw_sketch(mech, ax=None, *, title=None, names=False, font_size=8, colors=T
     colors : bool
         One colour per link (the frame grey); ``False`` draws in black.
 
-    Returns the axes. Each link is labelled with the id its graph uses, so that the sketch and
-    :func:`~gearlib.draw_graph` can be read side by side.
+    Returns
+    -------
+    matplotlib.axes.Axes
+        Each link is labelled with the id its graph uses, so that the sketch and
+        :func:`~gearlib.draw_graph` can be read side by side.
 
     >>> import gearlib as gl
     >>> ax = gl.draw_sketch(gl.catalog.load("compound_train"))
