@@ -50,9 +50,6 @@ class LeverSet:
     basic: tuple    # (gear, E_g) in the order of ``gears``
     teeth: tuple    # (gear, teeth) where the data give them
 
-    def relation(self) -> dict:
-        return dict(self.basic)
-
 
 @dataclass(frozen=True)
 class LeverNode:
