@@ -106,10 +106,13 @@ def draw_levers(levers, ax=None, *, state=None, title=None, font_size=9):
         ax.plot([i * _GAP] * 2, [min(ys), max(ys)], color="black", linewidth=3, solid_capstyle="round", zorder=2)
     for _link, a, b in geo["links"]:
         ax.plot([a[0], b[0]], [a[1], b[1]], color="0.6", linewidth=1.0, linestyle=":", zorder=1)
-    for _i, link, role, x, y in geo["nodes"]:
+    last: dict = {}
+    for i, link, role, x, y in sorted(geo["nodes"], key=lambda t: (t[0], t[4])):
         ax.plot([x], [y], marker="o", markersize=7, color="white", markeredgecolor="black", zorder=4)
         right = geo["speeds"].get(link, 0.0) < 0   # the label on the side its arrow leaves free
-        ax.text(x + (0.06 if right else -0.06) * _GAP, y, f"{link} {role}", ha="left" if right else "right",
+        ty = max(y, last.get((i, right), -1e9) + 0.055)   # two nodes close together: labels apart
+        last[i, right] = ty
+        ax.text(x + (0.06 if right else -0.06) * _GAP, ty, f"{link} {role}", ha="left" if right else "right",
                 va="center", fontsize=font_size, zorder=5)
     for name, kind, _links, on, pts in geo["elements"]:
         style = dict(color="black" if on else "0.55", linewidth=1.6 if on else 1.0)
