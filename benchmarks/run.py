@@ -366,6 +366,64 @@ def widget_callbacks():
     return rows
 
 
+# ----------------------------------------------------------------------------- kinematic sketch
+def _eight_speed():
+    """An eight-speed automatic: four simple sets (sun/ring 48/96, 48/96, 69/111, 23/85), brakes A and
+    B, clutches C, D and E; 12 moving links and the housing (its nine gears: tests/test_sketch.py)."""
+    return gl.Mechanism.from_dict({
+        "name": "eight-speed, four simple sets",
+        "links": list(range(9)) + [11, 12, 13, 14],
+        "turning_pairs": [[0, k, "a"] for k in range(1, 9)] + [[4, 11, "b"], [1, 12, "c"], [7, 13, "d"],
+                                                             [8, 14, "e"]],
+        "gear_pairs": [{"gears": [2, 11], "teeth": [48, 24]}, {"gears": [11, 3], "teeth": [24, 96], "type": "internal"},
+                       {"gears": [2, 12], "teeth": [48, 24]}, {"gears": [12, 5], "teeth": [24, 96], "type": "internal"},
+                       {"gears": [5, 13], "teeth": [69, 21]}, {"gears": [13, 6], "teeth": [21, 111], "type": "internal"},
+                       {"gears": [6, 14], "teeth": [23, 31]}, {"gears": [14, 4], "teeth": [31, 85], "type": "internal"}],
+        "ground": 0, "inputs": [1], "output": 8,
+        "shift_elements": [{"name": "A", "type": "brake", "link": 2}, {"name": "B", "type": "brake", "link": 3},
+                           {"name": "C", "type": "clutch", "links": [1, 6]}, {"name": "D", "type": "clutch", "links": [7, 8]},
+                           {"name": "E", "type": "clutch", "links": [5, 7]}],
+    })
+
+
+@case
+def sketch():
+    """The kinematic sketch of a 12-link transmission, its layout computed and drawn and the figure
+    rendered, against the same mechanism's graph drawn and rendered the same way (sketch_layout
+    caches nothing, so each round computes the layout again)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from gearlib.mechanism.sketch import figure_size
+
+    def render(draw, size):
+        fig = Figure(figsize=size, facecolor="white")
+        FigureCanvasAgg(fig)
+        draw(fig.subplots())
+        fig.canvas.draw()
+
+    mech = _eight_speed()
+
+    def ours():
+        sk = gl.sketch_layout(mech)
+        render(lambda ax: gl.draw_sketch(sk, ax=ax), figure_size(sk))
+
+    def layout():
+        gl.sketch_layout(mech)
+
+    def graph():
+        render(lambda ax: gl.draw_graph(mech, ax=ax), (6.4, 4.5))
+
+    ours(), graph()   # warm-up: matplotlib's fonts and gearlib's modules loaded
+    gc.collect()
+    t_ours, t_graph, t_layout = best(ours), best(graph), best(layout)
+    n = len(mech.links)
+    return [Row(f"kinematic sketch, {n - 1}-link transmission (drawn)", t_ours, t_graph,
+                "gl.draw_graph of the same mechanism, rendered", "under 200 ms", t_ours < 0.2),
+            Row(f"kinematic sketch, {n - 1}-link transmission (layout only)", t_layout, None, "-",
+                "- (information: geometry without matplotlib)", True)]
+
+
 # ----------------------------------------------------------------------------- fault frequencies
 def three_stage_gearbox():
     """A wind-turbine-like speed increaser: rotor 1 drives the carrier of a planetary stage (3

@@ -2,7 +2,9 @@
 
 * ``speeds FILE --ground G --input L=V ... [--json]``: every link's speed;
 * ``ratio FILE --ground G --input I --output O [--symbolic] [--json]``: a speed ratio;
-* ``dof FILE``: degrees of freedom by the counting rules and by rank.
+* ``dof FILE``: degrees of freedom by the counting rules and by rank;
+* ``sketch FILE --output OUT.svg|.png|.pdf [--lever [--gear G]]``: the kinematic sketch (or,
+  with ``--lever``, the lever diagram, with a gear's speeds) drawn to a file.
 """
 
 from __future__ import annotations
@@ -11,6 +13,7 @@ import sympy
 
 from ..mechanism.kinematics import METHODS, _to_complex, format_value, ratio, speeds
 from ..mechanism.mobility import dof
+from ..errors import InputError
 from ._args import Command, add_common, constraints, load_mechanism, parse_link_values, print_json
 
 # ----------------------------------------------------------------------------- speeds
@@ -88,9 +91,60 @@ def _dof_run(args) -> int:
     return 0
 
 
+# ----------------------------------------------------------------------------- sketch
+
+_FORMATS = (".svg", ".png", ".pdf")
+
+
+def _sketch_arguments(p):
+    p.add_argument("file", metavar="FILE", help="mechanism file (YAML/JSON) or catalogue name")
+    p.add_argument("--output", "-o", required=True, metavar="OUT", help="the drawing: OUT.svg, OUT.png or OUT.pdf")
+    p.add_argument("--lever", action="store_true", help="draw the lever diagram of its planetary sets instead")
+    p.add_argument("--gear", metavar="G", help="with --lever: draw the speeds of gear G of the file's schedule")
+    p.add_argument("--names", action="store_true", help="write each link's name after its id")
+    p.add_argument("--dpi", type=int, default=150, help="resolution of a .png (default 150)")
+
+
+def _sketch_run(args) -> int:
+    import pathlib
+
+    from matplotlib.figure import Figure
+
+    out = pathlib.Path(args.output)
+    if out.suffix.lower() not in _FORMATS:
+        raise InputError(f"--output {args.output!r}: give a file ending in {', '.join(_FORMATS)}")
+    if args.gear is not None and not args.lever:
+        raise InputError("--gear draws a gear's speeds on the lever diagram: add --lever")
+    if args.dpi <= 0:
+        raise InputError(f"--dpi {args.dpi}: give a positive resolution such as 150")
+    mech = load_mechanism(args.file)
+    if args.lever:
+        from ..gains.lever import lever_diagram
+        from ..gains.lever_plot import draw_levers
+
+        diag = lever_diagram(mech)
+        if args.gear is not None:
+            mech.gear_state(args.gear)  # an unknown gear: its error, before drawing
+        fig = Figure(figsize=(min(9.0, 3.2 + 1.9 * len(diag.levers)), 4.2), facecolor="white")
+        draw_levers(diag, ax=fig.subplots(), state=args.gear)
+        what = f"lever diagram ({len(diag.levers)} lever{'s' if len(diag.levers) != 1 else ''})"
+    else:
+        from ..mechanism.sketch import draw_sketch, figure_size, sketch_layout
+
+        sk = sketch_layout(mech)
+        fig = Figure(figsize=figure_size(sk), facecolor="white")
+        draw_sketch(mech if args.names else sk, ax=fig.subplots(), names=args.names)
+        what = f"kinematic sketch ({sk.mode} section)" if sk.mode != "fixed" else "kinematic sketch (fixed axes)"
+    fig.savefig(out, dpi=args.dpi, facecolor="white", bbox_inches="tight")
+    print(f"{what} of {mech.name!r} written to {out}")
+    return 0
+
+
 COMMANDS = (
     Command("speeds", "every link's angular velocity for given input speeds", _speeds_arguments, _speeds_run),
     Command("ratio", "the speed ratio output/input of a one-dof mechanism", _ratio_arguments, _ratio_run),
     Command("dof", "degrees of freedom, by the mobility counts and by the rank of the Willis equations",
             _dof_arguments, _dof_run),
+    Command("sketch", "draw the kinematic sketch (or, with --lever, the lever diagram) to an SVG, PNG or PDF file",
+            _sketch_arguments, _sketch_run),
 )

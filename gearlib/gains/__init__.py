@@ -12,6 +12,8 @@ transmission and input units and a structure matrix. This package holds
 * ``transmission`` - every gear of an automatic transmission, the shift table;
 * ``robots`` - Chen's transmission lines, units and structure matrix;
 * ``scaling`` - how solve time grows with the length of a train;
+* ``lever`` and ``lever_plot`` - lever diagrams of planetary trains (Benford and Leising), a
+  gear's speeds drawn on them;
 * ``drawing`` and ``widget`` - the propagation drawn, and the transmission explorer.
 
 Everything in ``EXPORTS`` is public; ``TOP`` is also ``gl.<name>``.
@@ -32,13 +34,15 @@ EXPORTS = {
     # gearlib.gains.scaling is the module; its function is gearlib.gains.scaling.scaling
     "scaling": ("ScalingCurve", "dense_nullspace_ratio", "plot_scaling"),
     "drawing": ("draw_propagation",),
+    "lever": ("LeverSet", "LeverNode", "Lever", "LeverDiagram", "lever_diagram"),
+    "lever_plot": ("lever_geometry", "draw_levers"),
     "widget": ("TransmissionExplorer", "transmission_explorer"),
 }
 
 TOP = (
     "relation", "rules", "transmission", "robots", "propagation", "scaling",
     "plan", "propagate", "Propagation", "unit_ratio", "local_gain", "derive_rule", "match_rule",
-    "shift_table", "geared_robot", "GearedRobot",
+    "shift_table", "geared_robot", "GearedRobot", "lever_diagram", "draw_levers",
 )
 
 __getattr__, __dir__, __all__ = lazy(__name__, EXPORTS)

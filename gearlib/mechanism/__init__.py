@@ -12,7 +12,9 @@ vertex), turning pairs thin edges labelled with their axis. This package holds
 * the solvers and the degrees of freedom: ``kinematics`` (:func:`~gearlib.speeds`,
   :func:`~gearlib.ratio`: exact, symbolic, numeric and, through chapter 4's matrix, null
   space) and ``mobility`` (:func:`~gearlib.dof`);
-* drawings and widgets: ``plot`` (the graph in the papers' convention, speed bars) and
+* drawings and widgets: ``sketch`` (the kinematic sketch, the stick diagram an engineer
+  draws, computed from the data: :func:`~gearlib.draw_sketch`), ``plot`` (the graph in the
+  papers' convention, speed bars) and
   ``widgets`` (the speed explorer, and the :class:`~gearlib.mechanism.Canvas` every
   widget of the book draws on); ``display`` (numbers for prose).
 
@@ -33,6 +35,8 @@ EXPORTS = {
     "mobility": ("Mobility", "dof", "redundant_gear_pairs", "choose_inputs"),
     "display": ("Number", "number"),
     "plot": ("style", "graph_layout", "draw_graph", "plot_speeds", "plot_ratio_sweep"),
+    "sketch": ("Sketch", "Block", "Line", "AxisLine", "Symbol", "Label", "sketch_layout", "draw_sketch",
+               "figure_size"),
     "widgets": ("Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png",
                 "encode_png"),
 }
@@ -43,7 +47,8 @@ TOP = (
     "willis_equations", "willis_matrix", "WillisEquation", "omega", "ratio_symbols",
     "dof", "Mobility", "choose_inputs", "speeds", "ratio", "Solution", "Constraints",
     "draw_graph", "plot_speeds", "number", "random_mechanism", "serial_train",
-    "plot", "widgets", "display", "equations", "generate", "graph", "io", "kinematics", "mobility",
+    "draw_sketch", "sketch_layout", "Sketch",
+    "plot", "sketch", "widgets", "display", "equations", "generate", "graph", "io", "kinematics", "mobility",
 )
 
 __getattr__, __dir__, __all__ = lazy(__name__, EXPORTS)

@@ -1,0 +1,281 @@
+"""Kinematic sketches: a mechanism drawn as an engineer draws it, from its data alone.
+
+:func:`~gearlib.draw_sketch` draws the conventional stick diagram of any mechanism given as data;
+:func:`~gearlib.sketch_layout` computes the same drawing as geometry (:class:`~gearlib.Sketch`), with nothing
+drawn, so that a test, or a reader, can check it.
+
+What the drawing shows, and where it comes from in the data:
+
+* the **axes**: one dash-dot line per coaxial group of turning pairs (links that are coaxial
+  share one line); the *main axis*, the group with the most links, is horizontal;
+* a train about a main axis (a planetary, an automatic transmission) is a **half section**:
+  above the axis only, each link turning about it as a shaft (inside, nearer the axis) or a
+  drum (outside the gears), shafts nested as their spans require, with spokes to its gears,
+  carrier arms, brakes and clutches. A train of fixed parallel axes (a gear pair, a compound
+  train) is a **full section**, the axes one above the other at their centre distances (the
+  developed view), every shaft held by **bearings** in the frame;
+* the **gears** as blocks whose heights follow the pitch radii (``radii``, or module and teeth;
+  teeth alone are relative sizes within a set of gears in mesh, whose module the data leave
+  free: such a set drawn under 40 % of the largest gear is drawn larger; a symbolic ratio takes
+  a size that closes its centre distance): a sun from its shaft to its pitch radius, a ring
+  outwards from its pitch radius,
+  a planet centred on its axis, off the main axis on its carrier's **pin**; a compound
+  (stepped) planet as two blocks on one pin, a double-pinion set as two pins; **bevel** gears
+  as frustums about their common cone apex, inclined by their shaft angle (from the pitch radii
+  when a bevel planet meets two gears, as in a differential or Humpage's reducer; else from
+  Penaud's angles, or 90 degrees);
+* the **frame** (the mechanism's ``ground``) hatched: a housing along the top when it carries
+  no gear, the bearings of fixed axes, or the hatched line of a held member;
+* **brakes** (a pair of plates under the hatched housing) and **clutches** (a pair of plates
+  between two members), with the names the data gives them;
+* each link's id once, on its first block (or its arm, or its line).
+
+A spatial train, with an axis held by a link that itself turns about an inclined axis, cannot
+be drawn in one plane: :func:`~gearlib.sketch_layout` raises :class:`~gearlib.errors.GeometryError` and says
+why, rather than draw something wrong. So do bevel gears whose pitch radii cannot meet.
+
+>>> import gearlib as gl
+>>> sk = gl.sketch_layout(gl.catalog.simple_planetary())
+>>> sk.mode
+'half'
+>>> [(b.link, b.kind) for b in sk.blocks]
+[(1, 'sun'), (2, 'planet'), (3, 'ring')]
+>>> sorted(lb.link for lb in sk.labels)
+[1, 2, 3, 4]
+>>> ax = gl.draw_sketch(gl.catalog.simpson())   # draws on a new figure and returns its axes
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..errors import DataFormatError
+from .data import Mechanism
+
+__all__ = ["Block", "Line", "AxisLine", "Symbol", "Label", "Sketch", "sketch_layout", "draw_sketch", "figure_size"]
+
+
+@dataclass(frozen=True)
+class Block:
+    """A gear: ``kind`` is ``"sun"``, ``"ring"`` (internal teeth), ``"planet"``, ``"gear"`` (on a
+    fixed axis) or ``"bevel"``; ``polygon`` its corners; ``radius`` its pitch radius; ``axis``
+    the label of the axis it turns about; ``copy`` marks the mirror image in a full section."""
+
+    link: object
+    kind: str
+    polygon: tuple
+    axis: str
+    radius: float
+    gear: int
+    copy: bool = False
+
+
+@dataclass(frozen=True)
+class Line:
+    """A straight piece of a link: ``"shaft"``, ``"drum"``, ``"spoke"``, ``"arm"``, ``"pin"``,
+    ``"riser"`` (a shaft joined to a drum) or ``"housing"`` (the frame)."""
+
+    link: object
+    kind: str
+    start: tuple
+    end: tuple
+    copy: bool = False
+
+
+@dataclass(frozen=True)
+class AxisLine:
+    """The centre line of one axis: its label and every link that turns about it."""
+
+    label: str
+    links: tuple
+    start: tuple
+    end: tuple
+
+
+@dataclass(frozen=True)
+class Symbol:
+    """A ``"brake"``, ``"clutch"``, ``"bearing"`` or ``"ground"`` symbol: its segments and the
+    polygons drawn hatched; ``name`` is a shift element's name."""
+
+    kind: str
+    name: str
+    links: tuple
+    segments: tuple
+    hatch: tuple
+    anchor: tuple
+    copy: bool = False
+
+
+@dataclass(frozen=True)
+class Label:
+    """A link's id, where the drawing writes it."""
+
+    link: object
+    text: str
+    xy: tuple
+
+
+@dataclass(frozen=True)
+class Sketch:
+    """The geometry of a kinematic sketch (see the module docstring), in the units of the pitch
+    radii. ``mode`` is ``"half"`` (a half section about the main axis), ``"full"`` (both halves,
+    when two identical planets are shown) or ``"fixed"`` (fixed parallel axes); ``crossings``
+    counts the spokes that cross another member's line; ``notes`` lists what the data leave
+    inconsistent (a centre distance the pitch radii do not close, drawn as the first mesh gives it)."""
+
+    name: str
+    mode: str
+    blocks: tuple
+    lines: tuple
+    axes: tuple
+    symbols: tuple
+    labels: tuple
+    crossings: int
+    notes: tuple
+    scale: float
+
+    def bounds(self) -> tuple:
+        """``(xmin, xmax, ymin, ymax)`` of everything drawn."""
+        pts = [q for b in self.blocks for q in b.polygon]
+        pts += [q for ln in self.lines for q in (ln.start, ln.end)]
+        pts += [q for a in self.axes for q in (a.start, a.end)]
+        pts += [q for s in self.symbols for seg in s.segments for q in seg]
+        pts += [q for s in self.symbols for h in s.hatch for q in h]
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        return min(xs), max(xs), min(ys), max(ys)
+
+    def plot(self, ax=None, **kw):
+        """Draw it: :func:`~gearlib.draw_sketch`."""
+        return draw_sketch(self, ax=ax, **kw)
+
+
+def sketch_layout(mech: Mechanism) -> Sketch:
+    """The kinematic sketch of *mech* as geometry (nothing is drawn): see the module docstring.
+
+    Raises :class:`~gearlib.errors.GeometryError` when the mechanism cannot be drawn in one plane, or
+    its bevel gears cannot meet.
+    """
+    from ._sketch_build import build
+
+    if not isinstance(mech, Mechanism):
+        raise DataFormatError(f"sketch_layout needs a gl.Mechanism, got {type(mech).__name__}")
+    out = build(mech)
+    return Sketch(
+        name=mech.name, mode=out["mode"],
+        blocks=tuple(Block(*b) for b in out["blocks"]),
+        lines=tuple(Line(*ln) for ln in out["lines"]),
+        axes=tuple(AxisLine(*a) for a in out["axes"]),
+        symbols=tuple(Symbol(*s) for s in out["symbols"]),
+        labels=tuple(Label(*lb) for lb in out["labels"]),
+        crossings=out["crossings"], notes=out["notes"], scale=out["scale"],
+    )
+
+
+_PALETTE = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
+            "#bcbd22", "#393b79", "#637939", "#8c6d31", "#843c39", "#7b4173")
+
+
+def draw_sketch(mech, ax=None, *, title=None, names=False, font_size=8, colors=True):
+    """Draw the kinematic sketch of *mech* (a :class:`~gearlib.Mechanism` or a :class:`~gearlib.Sketch`).
+
+    Parameters
+    ----------
+    title : str, optional
+        Default: the mechanism's name.
+    names : bool
+        Write each link's name after its id (``"1 sun"``).
+    colors : bool
+        One colour per link (the frame grey); ``False`` draws in black.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        Each link is labelled with the id its graph uses, so that the sketch and
+        :func:`~gearlib.draw_graph` can be read side by side.
+
+    >>> import gearlib as gl
+    >>> ax = gl.draw_sketch(gl.catalog.load("compound_train"))
+    >>> sorted(t.get_text() for t in ax.texts if t.get_text().isdigit())
+    ['0', '1', '2', '3']
+    """
+    from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.colors import to_rgba
+
+    sk = mech if isinstance(mech, Sketch) else sketch_layout(mech)
+    link_names = {lk.id: lk.name for lk in mech.links} if isinstance(mech, Mechanism) else {}
+    x0, x1, y0, y1 = sk.bounds()
+    pad = 0.05 * max(x1 - x0, y1 - y0)
+    x0, x1, y0, y1 = x0 - pad, x1 + pad, y0 - pad, y1 + pad
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        _, ax = plt.subplots(figsize=figure_size(sk), facecolor="white")
+    ground = mech.ground if isinstance(mech, Mechanism) else None
+    order = list(dict.fromkeys([lb.link for lb in sk.labels]))
+    color = {link: ("0.35" if link == ground else _PALETTE[i % len(_PALETTE)]) if colors else "black"
+             for i, link in enumerate(order)}
+    ax.add_collection(LineCollection([(a.start, a.end) for a in sk.axes], colors="0.55", linewidths=0.7,
+                                     linestyles=[(0, (8, 3, 1.5, 3))], zorder=1))
+    widths = {"pin": 1.3, "housing": 2.2}
+    ax.add_collection(LineCollection([(ln.start, ln.end) for ln in sk.lines],
+                                     colors=[color.get(ln.link, "black") for ln in sk.lines],
+                                     linewidths=[widths.get(ln.kind, 1.9) for ln in sk.lines], capstyle="butt",
+                                     zorder=2))
+    ax.add_collection(PolyCollection([b.polygon for b in sk.blocks], edgecolors="black", linewidths=0.8, zorder=3,
+                                     facecolors=[to_rgba(color.get(b.link, "black"), 0.3 if b.copy else 0.55)
+                                                 for b in sk.blocks]))
+    hatch = [h for sym in sk.symbols for h in sym.hatch]
+    if hatch:
+        ax.add_collection(PolyCollection(hatch, facecolors="white", edgecolors="0.3", hatch="////", linewidths=0.6,
+                                         zorder=2))
+    ax.add_collection(LineCollection([seg for sym in sk.symbols for seg in sym.segments], colors="black",
+                                     linewidths=1.6, capstyle="butt", zorder=4))
+    for sym in sk.symbols:
+        if sym.name and not sym.copy:
+            ax.text(sym.anchor[0], sym.anchor[1], f" {sym.name}", fontsize=font_size - 1, ha="left", va="center",
+                    style="italic", zorder=6)
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("equal")
+    texts = [lb.text + (f" {link_names[lb.link]}" if names and link_names.get(lb.link) else "") for lb in sk.labels]
+    for lb, text, (x, y) in zip(sk.labels, texts, _spread(ax, sk.labels, texts, font_size)):
+        ax.text(x, y, text, fontsize=font_size, ha="center", va="center", zorder=7,
+                bbox=dict(boxstyle="round,pad=0.15", facecolor="white", edgecolor=color.get(lb.link, "black"),
+                          linewidth=0.8))
+    ax.set_facecolor("white")
+    ax.axis("off")
+    ax.set_title(sk.name if title is None else title, fontsize=font_size + 2)
+    return ax
+
+
+def figure_size(sk: Sketch) -> tuple:
+    """``(width, height)`` in inches that shows *sk* at a readable scale on a page."""
+    x0, x1, y0, y1 = sk.bounds()
+    aspect = (y1 - y0) / max(x1 - x0, 1e-9)
+    w = 6.4 if aspect < 1.1 else max(3.2, 6.0 / aspect)
+    return (w, w * aspect + 0.5)
+
+
+def _spread(ax, labels, texts, font_size) -> list:
+    """Label positions moved apart where two labels' boxes would overlap (in points on the page)."""
+    fig = ax.figure
+    box = ax.get_position()
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    w_in, h_in = fig.get_size_inches()
+    per = min(box.width * w_in * 72 / (x1 - x0), box.height * h_in * 72 / (y1 - y0))  # points per data unit
+    placed: list = []
+    out = []
+    for lb, text in zip(labels, texts):
+        w = (0.62 * font_size * len(text) + 5) / per
+        h = (1.35 * font_size + 3) / per
+        x, y = lb.xy
+        for dx, dy in ((0, 0), (0, 1), (0, -1), (1, 0), (-1, 0), (1, 1), (-1, 1), (1, -1), (-1, -1), (0, 2), (0, -2)):
+            cx, cy = x + dx * w, y + dy * h
+            if all(abs(cx - px) >= (w + pw) / 2 or abs(cy - py) >= (h + ph) / 2 for px, py, pw, ph in placed):
+                break
+        else:
+            cx, cy = x, y
+        placed.append((cx, cy, w, h))
+        out.append((cx, cy))
+    return out
