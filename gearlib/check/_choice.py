@@ -19,6 +19,11 @@ __all__ = ["Choice", "LinkId", "LinkSet", "Groups", "Parts", "normalise"]
 MAX_ITEMS = 200
 
 
+def _cap(text: str) -> str:
+    """A capital for a first word in lower case; a symbol (``e_(2,7)``) keeps its case."""
+    return text[:1].upper() + text[1:] if re.match(r"[a-z]+[ ,:']", text) else text
+
+
 def normalise(text: str) -> str:
     """Lower case, letters and digits only: ``"Two-link chain"`` and ``"two link chain"`` agree."""
     text = str(text).casefold()
@@ -260,7 +265,7 @@ class Parts(Spec):
         right, notes, details = 0, [], {}
         for k, (label, spec) in self.parts.items():
             if k not in given or given[k] is None:
-                notes.append(f"{label[:1].upper() + label[1:]}: not given yet.")
+                notes.append(f"{_cap(label)}: not given yet.")
                 details[k] = False
                 continue
             try:
@@ -270,12 +275,10 @@ class Parts(Spec):
             details[k] = v.passed
             right += v.passed
             if not v.passed:
-                text = v.message.rstrip(".")
-                text = text[:1].upper() + text[1:] if re.match(r"[a-z]+[ ,:]", text) else text
-                notes.append(f"{label[:1].upper() + label[1:]}: {text}.")
+                notes.append(f"{_cap(label)}: {_cap(v.message.rstrip('.'))}.")
         if right == len(self.parts):
             return Verdict(True, "Well done: every part is right", 1.0, details)
         ok = [label for k, (label, _) in self.parts.items() if details.get(k)]
-        head = ", ".join(ok) + (" is" if len(ok) == 1 else " are") + " right. " if ok else ""
-        head = head[:1].upper() + head[1:]
+        both = ", ".join(ok[:-1]) + " and " + ok[-1] if len(ok) > 1 else "".join(ok)
+        head = _cap(both) + (" is" if len(ok) == 1 else " are") + " right. " if ok else ""
         return Verdict(False, head + " ".join(notes), right / len(self.parts), details)

@@ -72,7 +72,7 @@ def _figures(size: float, err: float) -> float:
 def agreement(reading, reference, *, floor: float = FLOOR) -> Agreement:
     """How the number *reading* stands against the number *reference* (see the module)."""
     value = reading.value
-    if reading.exact and _exactly_equal(value, reference):
+    if _exactly_equal(value, reference):  # exactly the answer, however it was written (2.5, 0.375, 5/2)
         return Agreement(True, True, math.inf, math.inf)
     a, e = numeric(value), numeric(reference)
     spread = complex(reading.spread)

@@ -175,7 +175,7 @@ class Check:
     _PUBLIC = (*__slots__, "points", "given", "statement", "predict", "predicts", "variants", "info")
 
     def __init__(self, name, exercise, title, stars, minutes, kind, question, form):
-        for key, value in zip(self.__slots__, (name, exercise, title, stars, minutes, kind,
+        for key, value in zip(Check.__slots__, (name, exercise, title, stars, minutes, kind,
                                                f"{int(exercise.split('.')[0]):02d}", question, form)):
             object.__setattr__(self, key, value)
 

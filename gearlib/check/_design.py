@@ -103,9 +103,10 @@ class Design(Spec):
                            ", ".join(c.name for c in self.conditions) + ")", 1.0)
         first = broken[0]
         message = first.message(design, params) if callable(first.message) else first.message
-        more = f" ({len(broken) - 1} more condition{'s' if len(broken) > 2 else ''} to meet after this one.)" \
+        message = message.rstrip(".") + "."
+        more = f" {len(broken) - 1} more condition{'s' if len(broken) > 2 else ''} to meet after this one." \
             if len(broken) > 1 else ""
-        return Verdict(False, f"{first.name}: {message}{more}", 1 - len(broken) / len(self.conditions),
+        return Verdict(False, f"{first.name[:1].upper() + first.name[1:]}: {message}{more}", 1 - len(broken) / len(self.conditions),
                        {"broken": [c.name for c in broken]})
 
 

@@ -144,8 +144,10 @@ def _with_unit(reading: Reading, unit: str | None, quantity: str) -> Reading:
         raise Unreadable(f"a {quantity} has no unit: give the number alone")
     if reading.unit in _RATE and unit in _RATE:
         f = _RATE[reading.unit] / _RATE[unit]
-        return dataclasses.replace(reading, value=reading.value * f, spread=complex(reading.spread) * float(f),
-                                   unit=unit)
+        spread = complex(reading.spread)
+        if reading.exact and reading.value.is_Integer:
+            spread = 0.5  # "2827 rad/s": a whole number with a unit is rounded to units
+        return dataclasses.replace(reading, value=reading.value * f, spread=spread * float(f), unit=unit)
     raise Unreadable(f"that unit does not fit: give the answer in {unit}")
 
 
@@ -180,7 +182,7 @@ class Value(Spec):
         self.mistakes = [*mistakes, *hints, *(_standard(quantity, self) if standard else [])]
         self.generic = generic or _GENERIC[quantity]
         what = {"count": "a whole number", "efficiency": "a number between 0 and 1 (or with %)"}.get(
-            quantity, "a number: int, fraction, decimal, complex or text such as '3/8'")
+            quantity, "a number: an int, a Fraction, a decimal, a complex number, or text such as 'p/q'")
         self.form = what + (f", in {self.unit}" if self.unit else "")
 
     def prepare(self, reference):
@@ -193,7 +195,8 @@ class Value(Spec):
         _with_unit(read(answer), self.unit, self.quantity)
 
     def judge(self, answer, reference, params) -> Verdict:
-        reading = _with_unit(read(answer), self.unit, self.quantity)
+        raw = read(answer)
+        reading = _with_unit(raw, self.unit, self.quantity)
         if self.quantity == "count" and not (reading.exact and reading.value.is_Integer):
             return Verdict(False, "A count is a whole number")
         try:
@@ -213,6 +216,10 @@ class Value(Spec):
         if not reading.exact and not self.exact and ag.right >= self.figures:
             return Verdict(True, f"Well done: right to {_n(ag.right)} (the digits after that are off: was an "
                            "intermediate result rounded?)", 1.0, {"figures": ag.right})
+        if raw.unit is not None and raw.unit != self.unit and _matches(dataclasses.replace(raw, unit=None), reference,
+                                                                       self.figures):
+            return Verdict(False, f"The number is right but the unit is not: that number is the answer in "
+                           f"{self.unit}, and {raw.unit} is another unit (write {self.unit}, or no unit)")
         for m in self.mistakes:
             try:
                 if isinstance(m, Mistake):

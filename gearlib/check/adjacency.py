@@ -46,11 +46,6 @@ def _table(sun, planet, f_sun, bearing: bool = False):
     return frequency_table(mech, ground=3, inputs={1: f_sun}, bearings=bearings, unit="Hz")
 
 
-def _real(z):
-    z = complex(z)
-    return z.real if abs(z.imag) < 1e-12 * max(1.0, abs(z)) else z
-
-
 def _same_size(a, e):
     return abs(abs(numeric(a)) - abs(numeric(e))) <= 1e-3 * abs(numeric(e))
 
@@ -67,16 +62,18 @@ def _same_size(a, e):
              "number cannot point along the planet's axis: keep the phase of the complex gear ratio."),
         Hint(lambda a, e, p: _same_size(a, e), "The size is right; the direction is not. The phase of e_(2,3) = "
              "-T(2,3)/T(3,2) is pi + theta_2 - theta_3."),
+        Mistake(lambda e, p: 1 / e, "You have the reciprocal, the ring over the planet: the question asks for "
+                "omega_3/omega_2, the planet over the ring."),
         Hint(lambda a, e, p: abs(abs(numeric(a)) - 1) < 1e-9, "A speed ratio of size 1 means the whole train turns "
              "as one body: did you forget the constraint row that holds the carrier?"),
     ], standard=False, generic="Stack M with C = [0 0 0 1], take the null space (one column) and divide it by its "
                                "entry for link 2."),
 )
 def adjacency_planet_ratio():
-    from ..adjacency.matrix import speed_ratio_matrix
     from ..catalog import load
+    from ..mechanism.kinematics import ratio
 
-    return _real(speed_ratio_matrix(load("penaud_example_1"), zero_speed=[4], normalize_to=[2])[2, 0])
+    return ratio(load("penaud_example_1"), output=3, input=2, ground=4)  # exact: the weights are algebraic
 
 
 _GEARBOX = ("A planetary gearbox: sun 1 with {sun} teeth, planet 2 with {planet}, ring 3 held (the teeth that "

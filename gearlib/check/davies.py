@@ -164,6 +164,8 @@ def _humpage_params(rng) -> dict:
              "efficiency?",
     data={"eta12": 0.99, "eta25": 0.98, "eta43": 0.985}, params=_humpage_params,
     answer=Value("efficiency", figures=4, meshes=lambda p: [p["eta12"], p["eta25"], p["eta43"]], mistakes=[
+        Mistake(lambda e, p: _humpage({"eta12": 0.99, "eta25": 0.99, "eta43": 0.99}), "That is the efficiency with "
+                "every mesh at 0.99, the chapter's case: here the three meshes differ."),
         Mistake(lambda e, p: _humpage(p, thesis_axis=True), "That is what the thesis's printed planet axis gives: "
                 "use the axis consistent with the pitch cones (or the Willis equations)."),
     ], generic="Use formula (H1) of the chapter with the three mesh efficiencies and the radii 20, 56, 24, 35, 76."),

@@ -7,6 +7,7 @@ the seven-link atlas. Expected answers are computed by :mod:`gearlib.synthesis`.
 
 from __future__ import annotations
 
+import functools
 import sympy
 
 from ._choice import Choice, LinkId, LinkSet, Parts
@@ -23,6 +24,7 @@ CHAIN = "GKC 7-2-7"
 ``next(m for m in gl.atlas.geared_chains(7, 2) if m.name == "GKC 7-2-7")``."""
 
 
+@functools.lru_cache(maxsize=1)
 def _chain():
     from ..synthesis import atlas
 
@@ -139,11 +141,12 @@ def synth_redundant_links():
     return terminal_constraint(_chain(), _T2, ground=2).redundant
 
 
+@functools.lru_cache(maxsize=1)
 def _grounds_counts():
     from ..synthesis import atlas
     from ..synthesis.dgm import identify
 
-    return [len(identify(m).grounds) for m in atlas.geared_chains(7, 2)]
+    return tuple(len(identify(m).grounds) for m in atlas.geared_chains(7, 2))
 
 
 @register(

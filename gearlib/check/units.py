@@ -7,6 +7,7 @@ and count over the one-dof six-link chains of the atlas.
 
 from __future__ import annotations
 
+import functools
 import re
 
 from ._choice import Choice, Groups, Parts
@@ -27,6 +28,7 @@ SERIES_TRAIN = {
 housing 0, the first carrier 3 also the second stage's sun."""
 
 
+@functools.lru_cache(maxsize=1)
 def _fractionation():
     from ..mechanism.data import Mechanism
     from ..units.fractionation import kinematic_units
@@ -135,6 +137,7 @@ def atlas_single_unit_chains():
     return sum(1 for m in atlas.geared_chains(6, 1) if len(kinematic_units(m).units) == 1)
 
 
+@functools.lru_cache(maxsize=1)
 def _six_link_count() -> int:
     from ..synthesis import atlas
 
