@@ -10,8 +10,10 @@ decimal is right when it is within half a unit of its last digit.
 >>> import gearlib as gl
 >>> gl.check.intro_gear_ratio(None)
 ✘ Not yet. No answer yet: replace `None` with your answer.
->>> gl.check.intro_gear_ratio("3/8")
-✘ Not yet. The size is right but the sign is not: count the external meshes from input to output (each reverses the direction relative to its carrier; an internal one keeps it); for bevel gears the sign follows the axis directions the exercise chose.
+>>> gl.check.intro_gear_ratio("2 pi / e_1_2")
+✘ Not yet. Your answer uses the name 'e_1_2'; give a number.
+>>> gl.check.intro_gear_ratio.given()
+{'N1': 21, 'N2': 56}
 
 Each check is numbered and described (``exercise``, ``title``, ``stars``, ``minutes``,
 ``kind``), can draw other numbers for a student (``check(answer, variant="s1234")``,
@@ -28,11 +30,12 @@ import importlib
 import pkgutil
 
 from ._choice import Choice, Groups, LinkId, LinkSet, Parts
-from ._core import KINDS, Check, Prediction, Spec, Verdict, catalogue, get, names, register, register_custom
+from ._core import KINDS, REGISTRY, Check, Prediction, register, register_custom
 from ._design import Condition, Design, Matrix
 from ._model import Model, Scenario
 from ._read import Unreadable
 from ._result import CheckResult
+from ._spec import Spec, Verdict
 from ._value import QUANTITIES, Hint, Mistake, Symbolic, Value
 
 __all__ = ["names", "get", "catalogue", "register", "register_custom", "Check", "CheckResult", "KINDS",
@@ -52,14 +55,44 @@ def _load_all() -> None:
         _loaded = True
 
 
+def names() -> list[str]:
+    """Names of every registered check."""
+    _load_all()
+    return sorted(REGISTRY)
+
+
+def get(name: str) -> Check:
+    """The check called *name*."""
+    _load_all()
+    try:
+        return REGISTRY[name]
+    except KeyError:
+        raise AttributeError(f"no exercise check {name!r}; see gl.check.names()") from None
+
+
+def _order(check: Check) -> tuple:
+    chapter, k = check.exercise.split(".")
+    return int(chapter), int(k)
+
+
+def catalogue(chapter=None) -> list[dict]:
+    """Every exercise (or those of one chapter, ``"01"`` or 1), in the book's order, as
+    :meth:`Check.info` dictionaries: what a course kit lists (never an answer)."""
+    _load_all()
+    checks = sorted(REGISTRY.values(), key=_order)
+    if chapter is not None:
+        checks = [c for c in checks if int(c.chapter) == int(chapter)]
+    return [c.info() for c in checks]
+
+
 def __getattr__(name: str):
     if name.startswith("__"):
         raise AttributeError(name)
+    if any(info.name == name for info in pkgutil.iter_modules(__path__)):
+        return importlib.import_module(f"{__name__}.{name}")  # a chapter's module: gl.check.mechanism
     return get(name)
 
 
 def __dir__():
     _load_all()
-    from ._core import REGISTRY
-
     return sorted(set(__all__) | set(REGISTRY))

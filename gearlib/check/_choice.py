@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterable, Mapping
 
-from ._core import Spec, Verdict
+from ._spec import Spec, Verdict
 from ._read import Unreadable
 
 __all__ = ["Choice", "LinkId", "LinkSet", "Groups", "Parts", "normalise"]

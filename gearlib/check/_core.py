@@ -26,9 +26,9 @@ from types import MappingProxyType
 
 from ._read import Unreadable
 from ._result import CheckResult
+from ._spec import Spec, Verdict
 
-__all__ = ["Check", "register", "register_custom", "names", "get", "catalogue", "KINDS", "Spec", "Verdict",
-           "Prediction"]
+__all__ = ["Check", "register", "register_custom", "KINDS", "Prediction", "REGISTRY"]
 
 REGISTRY: dict[str, Check] = {}
 _SECRETS: dict[str, _Secret] = {}
@@ -46,37 +46,6 @@ KINDS = {
     "explore": "explore with the library (a loop, a count over an atlas)",
 }
 _EXERCISE = re.compile(r"^\d{1,2}\.\d{1,2}$")
-
-
-@dataclass(frozen=True)
-class Verdict:
-    """What a spec says of an answer: ``score`` is the share of the answer that is right."""
-
-    passed: bool
-    message: str
-    score: float = 0.0
-    details: Mapping = field(default_factory=dict)
-
-
-class Spec:
-    """What an answer must look like and how a wrong one is diagnosed (subclass it)."""
-
-    form = "your answer"
-
-    def prepare(self, reference):
-        """The reference as the spec compares it (called once per variant)."""
-        return reference
-
-    def check_form(self, answer) -> None:
-        """Raise :class:`~gearlib.check.Unreadable` if *answer* is not of the form asked for
-        (run before the reference is computed, so a malformed answer is answered at once)."""
-
-    def judge(self, answer, reference, params) -> Verdict:  # pragma: no cover - interface
-        raise NotImplementedError
-
-    def example(self, reference, params):
-        """An answer that passes (for the tests of the machinery; never shown)."""
-        return reference
 
 
 @dataclass(frozen=True)
@@ -188,9 +157,6 @@ class Check:
     def __repr__(self) -> str:
         return (f"<check {self.exercise} {self.title!r} ({'★' * self.stars}, about {self.minutes} min): "
                 f"gl.check.{self.name}(answer)>")
-
-    def __reduce__(self):  # pickled by name, like a function
-        return (get, (self.name,))
 
     @property
     def points(self) -> int:
@@ -355,40 +321,6 @@ def register_custom(name: str, accept: Callable, *, exercise: str, title: str, s
     messages are tested against leaks for every check."""
     return register(name, exercise=exercise, title=title, stars=stars, minutes=minutes, kind=kind,
                     question=question, answer=_Custom(accept), data=data, params=params)(lambda **_: None)
-
-
-def names() -> list[str]:
-    """Names of every registered check."""
-    from . import _load_all
-
-    _load_all()
-    return sorted(REGISTRY)
-
-
-def get(name: str) -> Check:
-    """The check called *name*."""
-    from . import _load_all
-
-    _load_all()
-    try:
-        return REGISTRY[name]
-    except KeyError:
-        raise AttributeError(f"no exercise check {name!r}; see gl.check.names()") from None
-
-
-def _order(check):
-    chapter, k = check.exercise.split(".")
-    return int(chapter), int(k)
-
-
-def catalogue(chapter=None) -> list[dict]:
-    """Every exercise (or those of one chapter, ``"01"`` or 1), in the book's order, as
-    :meth:`Check.info` dictionaries."""
-    names()
-    checks = sorted(REGISTRY.values(), key=_order)
-    if chapter is not None:
-        checks = [c for c in checks if int(c.chapter) == int(chapter)]
-    return [c.info() for c in checks]
 
 
 # for the tests of the machinery only: never shown to a reader

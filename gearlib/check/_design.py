@@ -15,7 +15,7 @@ import sympy
 
 from ._choice import _link, normalise
 from ._compare import equivalent, proportional
-from ._core import Spec, Verdict
+from ._spec import Spec, Verdict
 from ._read import Unreadable, read
 
 __all__ = ["Design", "Condition", "Matrix"]

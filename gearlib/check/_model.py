@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from ._choice import normalise
 from ._compare import numeric
-from ._core import Spec, Verdict
+from ._spec import Spec, Verdict
 from ._read import Unreadable
 
 __all__ = ["Model", "Scenario"]

@@ -33,7 +33,7 @@ from dataclasses import dataclass
 import sympy
 
 from ._compare import agreement, equivalent, numeric
-from ._core import Spec, Verdict
+from ._spec import Spec, Verdict
 from ._read import Reading, Unreadable, read
 
 __all__ = ["Value", "Symbolic", "Mistake", "Hint", "QUANTITIES"]
@@ -186,7 +186,8 @@ class Value(Spec):
         self.form = what + (f", in {self.unit}" if self.unit else "")
 
     def prepare(self, reference):
-        return sympy.nsimplify(reference) if isinstance(reference, float) else sympy.sympify(reference)
+        # a float reference (computed numerically) is kept as it is: no guessing of a fraction
+        return sympy.Float(reference, 17) if isinstance(reference, float) else sympy.sympify(reference)
 
     def example(self, reference, params):
         return reference

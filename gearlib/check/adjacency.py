@@ -2,7 +2,7 @@
 
 Exercises 4.2 to 4.4 share a planetary gearbox the chapter does not show: sun 1 (30 teeth by
 default), planet 2 (30), ring 3 (held), carrier 4; the sun turns at 20 Hz. A ball bearing
-(D_m = 40 mm, d_b = 8 mm, Z = 9, no contact angle) carries the planet on the carrier's pin:
+(D_m = 40 mm, d_b = 6 mm, Z = 9, no contact angle) carries the planet on the carrier's pin:
 inner ring on 4, outer ring in 2. Variants draw other teeth and another sun speed.
 """
 
@@ -41,7 +41,7 @@ def _table(sun, planet, f_sun, bearing: bool = False):
     from ..mechanism.elements import Bearing
 
     mech = simple_planetary(sun=sun, ring=sun + 2 * planet, planet=planet)
-    bearings = [((4, 2), Bearing(pitch_diameter=40, ball_diameter=8, balls=9, inner=4, name="planet bearing"))] \
+    bearings = [((4, 2), Bearing(pitch_diameter=40, ball_diameter=6, balls=9, inner=4, name="planet bearing"))] \
         if bearing else None
     return frequency_table(mech, ground=3, inputs={1: f_sun}, bearings=bearings, unit="Hz")
 
@@ -121,7 +121,7 @@ def adjacency_planet_tooth_frequency(sun, planet, f_sun):
 
 
 def _bpfo(f_r, inner=False, factor=True):
-    z, d, big = 9, Fraction(8), Fraction(40)
+    z, d, big = 9, Fraction(6), Fraction(40)
     return Fraction(z, 2) * ((1 + d / big) if inner else (1 - d / big) if factor else 1) * f_r
 
 
@@ -129,7 +129,7 @@ def _bpfo(f_r, inner=False, factor=True):
     "adjacency_outer_ring_frequency", exercise="4.4", title="A defect on a planet bearing's outer ring", stars=2,
     minutes=15, kind="compute",
     question=_GEARBOX + " The planet turns on a ball bearing on the carrier's pin: inner ring on the pin (link 4), "
-                        "outer ring in the planet (link 2); D_m = 40 mm, d_b = 8 mm, Z = 9 balls, no contact angle. "
+                        "outer ring in the planet (link 2); D_m = 40 mm, d_b = 6 mm, Z = 9 balls, no contact angle. "
                         "At what frequency (Hz) does a defect on the outer ring repeat?",
     data=_BOX, params=_box,
     answer=Value("frequency", mistakes=[

@@ -122,7 +122,7 @@ def _star_truth(reference, params):
     question="A planetary with a sun of {sun} teeth, planets of {planet} and a ring of {ring} has its carrier "
              "held, and the sun drives. First predict how the ring turns compared with the sun (same way or "
              "opposite way, faster or slower) and record it; then compute omega_ring / omega_sun.",
-    data={"sun": 20, "planet": 25, "ring": 70},
+    data={"sun": 22, "planet": 25, "ring": 72},
     params=lambda rng: _planetary_teeth(rng),
     answer=Value("ratio", mistakes=[
         Mistake(lambda e, p: Fraction(-p["sun"], p["planet"]), "That is the planet's speed over the sun's; continue "

@@ -12,7 +12,8 @@ import sympy
 
 from ._choice import Choice, LinkId, LinkSet, Parts
 from ._compare import proportional
-from ._core import Spec, Verdict, register
+from ._core import register
+from ._spec import Spec, Verdict
 from ._read import Unreadable, read
 from ._value import Mistake, Value
 
