@@ -522,3 +522,40 @@ def test_each_generic_test_fails_on_a_broken_check():
 
     with pytest.raises(AssertionError, match="took"):
         assert_malformed_answers_get_a_hint_fast(_toy(_Slow("ratio"), lambda: F(2, 7)))
+
+
+# ----------------------------------------------------------------------------- the pages
+def _cells(path):
+    return json.loads(path.read_text(encoding="utf-8"))["cells"]
+
+
+@pytest.mark.parametrize("chapter", sorted({gl.check.get(n).chapter for n in ANSWERS}))
+def test_each_exercise_is_on_its_page_with_its_title_and_a_solution(checks, chapter):
+    from notebook_tools import ROOT
+
+    page = next((ROOT / "exercises").glob(f"{chapter}_*.ipynb"))
+    solutions = next((ROOT / "book" / "solutions").glob(f"{chapter}_*.ipynb"))
+    cells = _cells(page)
+    text = ["".join(c["source"]) for c in cells]
+    solved = "\n".join("".join(c["source"]) for c in _cells(solutions))
+    for info in gl.check.catalogue(chapter):
+        name, number = info["name"], info["exercise"]
+        calls = [i for i, t in enumerate(text) if re.search(rf"gl\.check\.{name}\((?!.*\bvariant=)", t)]
+        assert len(calls) == 1, f"{number} {name}: checked {len(calls)} times on {page.name}"
+        header = f":::{{exercise}} {number}: {info['title']} · {'★' * info['stars']} · {info['minutes']} min"
+        before = [i for i, t in enumerate(text[:calls[0]]) if t.startswith(":::{exercise}")]
+        assert before and text[before[-1]].startswith(header), f"{number}: the cell before the check is not '{header}'"
+        label = re.search(r":label: (\S+)", text[before[-1]]).group(1)
+        assert f":::{{solution}} {label}" in solved, f"{number}: no solution for {label} on {solutions.name}"
+        assert f"gl.check.{name}(" in solved, f"{number}: the solution page does not run the check"
+        # the exercise's block, the cells up to its check, and the shared descriptions above it
+        shared = [t for c, t in zip(cells[1:before[-1]], text[1:before[-1]])
+                  if c["cell_type"] == "markdown" and not t.startswith(":::")]
+        statement = "\n".join([*shared, *text[before[-1]:calls[0]]])
+        check = gl.check.get(name)
+        for key, value in check.given().items():
+            shown = str(value) if not isinstance(value, float) else f"{value:g}"
+            if key.endswith("printed"):
+                continue
+            assert re.search(rf"(?<![\d.]){re.escape(shown)}(?![\d])", statement), \
+                f"{number}: the page does not show {key} = {shown} (the check's book numbers)"

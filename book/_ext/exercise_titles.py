@@ -17,13 +17,16 @@ TITLE = re.compile(r"^(Exercise|Solution to Exercise) \((\d+\.\d+:.*)\)$", re.S)
 
 
 def tidy_titles(app, doctree, docname):
-    for node in doctree.findall(nodes.Element):
-        if type(node).__name__ not in ("exercise_title", "solution_title"):
+    for node in doctree.findall(nodes.title):  # sphinx-exercise has made its titles plain titles by now
+        if not TITLE.match(node.astext()):
             continue
-        match = TITLE.match(node.astext())
-        if match and all(isinstance(c, nodes.Text) for c in node.children):
-            node.children = []
-            node += nodes.Text(f"{match.group(1)} {match.group(2)}")
+        texts = list(node.findall(nodes.Text))  # the solution's title links to its exercise: keep the link
+        opening = next((t for t in texts if str(t) == " ("), None)
+        if opening is None or not str(texts[-1]).endswith(")"):
+            continue
+        opening.parent.replace(opening, nodes.Text(" "))
+        last = texts[-1]
+        last.parent.replace(last, nodes.Text(str(last)[:-1]))
 
 
 def setup(app):

@@ -36,7 +36,8 @@ class Choice(Spec):
     """One of ``options``: a list of texts, or ``{key: text}`` (then the key, such as ``"B"``,
     or the text is accepted). ``synonyms``: ``{option: [other ways to write it]}``;
     ``wrong``: ``{option: message}`` for a wrong option; ``generic``: the message for any other
-    wrong option; ``normaliser``: how texts are compared (:func:`normalise` by default).
+    wrong option; ``normaliser``: how texts are compared (by default lower case, letters and
+    digits only).
     The reference function returns the right option (its key)."""
 
     def __init__(self, options, *, synonyms: Mapping | None = None, wrong: Mapping | None = None,

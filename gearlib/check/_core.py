@@ -134,7 +134,7 @@ class Check:
 
     Public: ``name``, ``exercise`` (``"1.3"``), ``title``, ``stars`` (difficulty, 1 to 3,
     also the points a grader gives), ``minutes`` (estimated time), ``kind`` (see
-    :data:`~gearlib.check.KINDS`), ``chapter`` (``"01"``), ``question`` (the statement, with
+    ``gl.check.KINDS``), ``chapter`` (``"01"``), ``question`` (the statement, with
     ``{name}`` for the numbers of a variant), ``form`` (what kind of answer it takes);
     :meth:`given` and :meth:`statement` for a variant's numbers, :meth:`predict` for a guess
     recorded before the answer.

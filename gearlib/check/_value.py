@@ -253,7 +253,7 @@ def _plain(expr):
 
 class Symbolic(Spec):
     """An expression in the symbols ``symbols`` (names), checked up to algebra: equal at
-    random rational points (see :func:`~gearlib.check._compare.equivalent`).
+    random rational points (exactly for rational functions, to 30 digits otherwise).
 
     ``values(params)`` gives the symbols' values for the exercise's numbers, so that a number
     given instead of the formula, or a formula right only for these numbers, is recognised;
