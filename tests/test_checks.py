@@ -559,3 +559,38 @@ def test_each_exercise_is_on_its_page_with_its_title_and_a_solution(checks, chap
                 continue
             assert re.search(rf"(?<![\d.]){re.escape(shown)}(?![\d])", statement), \
                 f"{number}: the page does not show {key} = {shown} (the check's book numbers)"
+
+
+def _numbers_of(reference):
+    """``{part: number}`` of a reference that is one number or a dict holding numbers."""
+    parts = reference if isinstance(reference, dict) else {None: reference}
+    out = {}
+    for key, value in parts.items():
+        if isinstance(value, sympy.Basic) and value.is_number:
+            out[key] = complex(sympy.N(value, 30))
+    return out
+
+
+@pytest.mark.parametrize("name", sorted(ANSWERS))
+def test_variants_round_and_hint_like_the_book(checks, name):
+    """For other numbers too: the reference rounded to four figures is not a method error, and
+    typical wrong numbers (sign, reciprocal, a factor) get a hint without the answer."""
+    check = gl.check.get(name)
+    for variant in ("s1", "s2", "s3"):
+        _, reference = _core._reference(check, variant)
+        for key, z in _numbers_of(reference).items():
+            if z == 0 or (z.imag == 0 and z.real == int(z.real) and abs(z.real) < 10**4):
+                continue
+            wrongs = [-z, 1 / z, 1.37 * z]
+            exact = _core._example(check, variant)
+            for wrong in wrongs:
+                value = wrong.real if wrong.imag == 0 else wrong
+                answer = value if key is None else dict(exact, **{key: value})
+                if not isinstance(answer, dict):
+                    assert_hint_without_answer(check, answer, reference, variant)
+                else:
+                    result = check(answer, variant=variant)
+                    assert not result.passed and not leaks_in(result.message, reference[key], percent=True), \
+                        (name, variant, result.message)
+            if key is None:
+                assert_rounding_is_not_a_method_error(check, z, variant)
