@@ -1,17 +1,27 @@
-"""Exercise checks: ``gl.check.<name>(answer)``.
+"""Exercise checks: ``gl.check.<name>(answer)``, and the machinery to write new ones.
 
-Each check answers a wrong value with a hint and a right one with a short confirmation;
-it never shows the solution and never raises. Answers may be ints, floats, fractions,
-complex numbers, sympy expressions or text (``"2/7"``).
+A check answers a right answer with a short confirmation and a wrong one with a hint that
+diagnoses the usual mistakes of its kind of quantity; it never shows the answer (no
+attribute, method, repr or message of a check carries it), never raises, and returns in
+bounded time whatever it is given. Answers may be ints, floats, fractions, complex numbers,
+numpy or sympy values, or text (``"2/7"``, ``"−1.3846"``, ``"450 Hz"``, ``"89.6 %"``); a
+decimal is right when it is within half a unit of its last digit.
 
 >>> import gearlib as gl
->>> gl.check.intro_planetary_ratio(None)
+>>> gl.check.intro_gear_ratio(None)
 ✘ Not yet. No answer yet: replace `None` with your answer.
->>> gl.check.intro_planetary_ratio("7/2")
-✘ Not yet. You have the reciprocal: check which speed goes on top (in this book a ratio is output over input).
+>>> gl.check.intro_gear_ratio("2 pi / e_1_2")
+✘ Not yet. Your answer uses the name 'e_1_2'; give a number.
+>>> gl.check.intro_gear_ratio.given()
+{'N1': 21, 'N2': 56}
 
-Chapters add checks in their own module here (``gearlib/check/<chapter>.py``) with
-``register``; every module in this package is imported on first use.
+Each check is numbered and described (``exercise``, ``title``, ``stars``, ``minutes``,
+``kind``), can draw other numbers for a student (``check(answer, variant="s1234")``,
+``check.given(variant)``, ``check.statement(variant)``), and returns a
+:class:`CheckResult` a grader can score. Chapters register their checks in their own
+module here (``gearlib/check/<subpackage>.py``) with :func:`register` and a spec
+(:class:`Value`, :class:`Symbolic`, :class:`Choice`, ...); every module of this package whose
+name does not start with ``_`` is imported on first use.
 """
 
 from __future__ import annotations
@@ -19,9 +29,19 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
-from ._core import REGISTRY, Check, CheckResult, Hint, as_value, close, register, register_custom
+from ._choice import Choice, Groups, LinkId, LinkSet, Parts
+from ._core import KINDS, REGISTRY, Check, Prediction, register, register_custom
+from ._design import Condition, Design, Matrix
+from ._model import Model, Scenario
+from ._read import Unreadable
+from ._result import CheckResult
+from ._spec import Spec, Verdict
+from ._value import QUANTITIES, Hint, Mistake, Symbolic, Value
 
-__all__ = ["names", "get", "Check", "CheckResult", "Hint", "register", "register_custom", "as_value", "close"]
+__all__ = ["names", "get", "catalogue", "register", "register_custom", "Check", "CheckResult", "KINDS",
+           "QUANTITIES", "Value", "Symbolic", "Mistake", "Hint", "Choice", "LinkId", "LinkSet", "Groups",
+           "Parts", "Model", "Scenario", "Design", "Condition", "Matrix", "Prediction", "Spec", "Verdict",
+           "Unreadable"]
 
 _loaded = False
 
@@ -50,12 +70,29 @@ def get(name: str) -> Check:
         raise AttributeError(f"no exercise check {name!r}; see gl.check.names()") from None
 
 
+def _order(check: Check) -> tuple:
+    chapter, k = check.exercise.split(".")
+    return int(chapter), int(k)
+
+
+def catalogue(chapter=None) -> list[dict]:
+    """Every exercise (or those of one chapter, ``"01"`` or 1), in the book's order, as
+    :meth:`Check.info` dictionaries: what a course kit lists (never an answer)."""
+    _load_all()
+    checks = sorted(REGISTRY.values(), key=_order)
+    if chapter is not None:
+        checks = [c for c in checks if int(c.chapter) == int(chapter)]
+    return [c.info() for c in checks]
+
+
 def __getattr__(name: str):
     if name.startswith("__"):
         raise AttributeError(name)
+    if any(info.name == name for info in pkgutil.iter_modules(__path__)):
+        return importlib.import_module(f"{__name__}.{name}")  # a chapter's module: gl.check.mechanism
     return get(name)
 
 
 def __dir__():
     _load_all()
-    return sorted(list(globals()) + list(REGISTRY))
+    return sorted(set(__all__) | set(REGISTRY))

@@ -1,250 +1,338 @@
-"""The machinery behind exercise checks.
+"""The machinery behind exercise checks: the registry, variants, predictions, the result.
 
-A check compares a reader's answer with a value gearlib computes, and answers with a
-short confirmation or a hint. It never prints the expected value, never raises, and
-accepts the usual forms of an answer: int, float, :class:`fractions.Fraction`, complex,
-numpy numbers and arrays, sympy expressions, and text such as ``"2/7"`` or
-``"e_1_2*e_2_3/(e_1_2*e_2_3 - 1)"``.
+A check is registered with :func:`register`, which takes the function that computes the
+reference answer from the problem's numbers and keeps it here, out of the check's reach: a
+:class:`Check` object has no attribute, method, repr or message that carries the answer.
+What the answer must look like, and how a wrong one is diagnosed, is the check's *spec*
+(:class:`~gearlib.check.Value`, :class:`~gearlib.check.Symbolic`,
+:class:`~gearlib.check.Choice`, :class:`~gearlib.check.Model`,
+:class:`~gearlib.check.Design`, ...).
 
-A chapter defines a check with ``register``::
-
-    @register("intro_planetary_ratio", chapter="00", hints=[...])
-    def intro_planetary_ratio():
-        return gl.ratio(gl.catalog.simple_planetary(24, 60), output=4, input=1, ground=3)
-
-and readers call ``gl.check.intro_planetary_ratio(answer)``.
+Variants: ``data`` holds the book's numbers and ``params(rng)`` draws other ones from a
+:class:`random.Random` seeded by the check's name and the variant (a student id or an
+int), through SHA-256, so that a variant has the same numbers in every process.
 """
 
 from __future__ import annotations
 
-import math
-import numbers
+import hashlib
 import random
-from collections.abc import Callable, Sequence
+import re
+from collections import OrderedDict
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from fractions import Fraction
+from types import MappingProxyType
 
-import numpy as np
-import sympy
+from ._read import Unreadable
+from ._result import CheckResult
+from ._spec import Spec, Verdict
 
-__all__ = ["CheckResult", "Check", "register", "register_custom", "REGISTRY", "as_value", "close", "Hint"]
+__all__ = ["Check", "register", "register_custom", "KINDS", "Prediction", "REGISTRY"]
 
 REGISTRY: dict[str, Check] = {}
+_SECRETS: dict[str, _Secret] = {}
+_PREDICTIONS: dict[tuple, str] = {}
+_ATTEMPTED: set = set()
+
+KINDS = {
+    "compute": "compute by hand, then confirm with gearlib",
+    "model": "model a mechanism from a sketch or a description into data",
+    "derive": "derive a symbolic result",
+    "design": "design or inverse problem with many right answers",
+    "concept": "conceptual question with a reason",
+    "mistake": "find the mistake in a derivation, a data file or a printed value",
+    "predict": "predict, then compute",
+    "explore": "explore with the library (a loop, a count over an atlas)",
+}
+_EXERCISE = re.compile(r"^\d{1,2}\.\d{1,2}$")
 
 
 @dataclass(frozen=True)
-class CheckResult:
-    """The verdict of a check: ``passed`` and a message. Truthy when passed."""
+class Prediction:
+    """A guess the reader commits to before computing: one of ``choice``'s options.
 
-    passed: bool
-    message: str
-    name: str = ""
+    ``truth(reference, params)`` names the right option; ``explain`` (text, or a function of
+    the params) is shown once the computed answer has passed.
+    """
 
-    def __bool__(self) -> bool:
-        return self.passed
+    choice: object
+    truth: Callable
+    explain: object = ""
 
-    def __str__(self) -> str:
-        mark = "✔ Correct." if self.passed else "✘ Not yet."
-        return f"{mark} {self.message}".strip()
+
+@dataclass
+class _Secret:
+    compute: Callable
+    spec: Spec
+    data: dict
+    params: Callable | None
+    prediction: Prediction | None
+    memo: OrderedDict = field(default_factory=OrderedDict)
+
+
+def variant_key(variant) -> str | None:
+    """The variant as text (``None`` for the book's numbers); ints and their text agree."""
+    if variant is None:
+        return None
+    if isinstance(variant, bool) or not isinstance(variant, (int, str)):
+        raise Unreadable("a variant is a student id (text) or a whole number")
+    key = str(variant).strip()
+    if not key or len(key) > 100:
+        raise Unreadable("a variant is a non-empty student id of at most 100 characters")
+    return key
+
+
+def _rng(name: str, key: str) -> random.Random:
+    digest = hashlib.sha256(f"gearlib.check\0{name}\0{key}".encode()).digest()
+    return random.Random(int.from_bytes(digest[:8], "big"))
+
+
+def _given(name: str, key: str | None) -> dict:
+    secret = _SECRETS[name]
+    if key is None or secret.params is None:
+        return dict(secret.data)
+    return dict(secret.params(_rng(name, key)))
+
+
+def _state(name: str, key: str | None):
+    """``(params, prepared reference)`` of a variant, computed once."""
+    secret = _SECRETS[name]
+    if key in secret.memo:
+        secret.memo.move_to_end(key)
+        return secret.memo[key]
+    params = _given(name, key)
+    reference = secret.spec.prepare(secret.compute(**params))
+    secret.memo[key] = (params, reference)
+    while len(secret.memo) > 128:
+        secret.memo.popitem(last=False)
+    return params, reference
+
+
+def _sentence(message: str) -> str:
+    """*message* with a full stop; a first word in lower case (an Unreadable message such as
+    "no answer yet: ...") gets a capital, a symbol (``e_(1,2) is ...``) keeps its case."""
+    message = message.strip()
+    if message and message[-1] not in ".!?":
+        message += "."
+    if re.match(r"[a-z]+[ ,:]", message):
+        message = message[0].upper() + message[1:]
+    return message
+
+
+def _show(value) -> str:
+    if isinstance(value, Fraction):
+        return f"{value.numerator}/{value.denominator}" if value.denominator != 1 else str(value.numerator)
+    if isinstance(value, (list, tuple)):
+        return ", ".join(_show(v) for v in value)
+    return str(value)
+
+
+class Check:
+    """One exercise check: call it with an answer, ``check(answer, variant=None)``, to get a
+    :class:`~gearlib.check.CheckResult`.
+
+    Public: ``name``, ``exercise`` (``"1.3"``), ``title``, ``stars`` (difficulty, 1 to 3,
+    also the points a grader gives), ``minutes`` (estimated time), ``kind`` (see
+    ``gl.check.KINDS``), ``chapter`` (``"01"``), ``question`` (the statement, with
+    ``{name}`` for the numbers of a variant), ``form`` (what kind of answer it takes);
+    :meth:`given` and :meth:`statement` for a variant's numbers, :meth:`predict` for a guess
+    recorded before the answer.
+    """
+
+    __slots__ = ("name", "exercise", "title", "stars", "minutes", "kind", "chapter", "question", "form")
+    _PUBLIC = (*__slots__, "points", "given", "statement", "predict", "predicts", "variants", "info")
+
+    def __init__(self, name, exercise, title, stars, minutes, kind, question, form):
+        for key, value in zip(Check.__slots__, (name, exercise, title, stars, minutes, kind,
+                                               f"{int(exercise.split('.')[0]):02d}", question, form)):
+            object.__setattr__(self, key, value)
+
+    def __setattr__(self, key, value):
+        raise AttributeError("exercise checks are read-only")
+
+    def __dir__(self):
+        return sorted(self._PUBLIC)
 
     def __repr__(self) -> str:
-        return str(self)
-
-    def _repr_html_(self) -> str:
-        color = "#1a7f37" if self.passed else "#9a6700"
-        return f"<p style='color:{color}'><b>{'✔ Correct.' if self.passed else '✘ Not yet.'}</b> {self.message}</p>"
-
-
-class _Unreadable(Exception):
-    pass
-
-
-def as_value(answer):
-    """Turn an answer into a sympy object (number, expression, Matrix) for comparison."""
-    from .._common.parse import parse_expr
-
-    if answer is None:
-        raise _Unreadable("no answer yet: replace `None` with your answer")
-    if isinstance(answer, bool):
-        raise _Unreadable("a yes/no value is not an answer to this question")
-    if isinstance(answer, (sympy.MatrixBase, np.ndarray)) or (
-        isinstance(answer, Sequence) and not isinstance(answer, (str, bytes))
-    ):
-        arr = answer.tolist() if hasattr(answer, "tolist") else list(answer)
-        if arr and isinstance(arr[0], (list, tuple)):
-            return sympy.Matrix([[as_value(x) for x in row] for row in arr])
-        return sympy.Matrix([as_value(x) for x in arr])
-    if isinstance(answer, sympy.Basic):
-        if isinstance(answer, sympy.Equality):
-            raise _Unreadable("give an expression, not an equation (drop the `Eq(...)`)")
-        return answer
-    if isinstance(answer, np.generic):
-        answer = answer.item()
-    if isinstance(answer, (numbers.Number, str)):
-        try:
-            return parse_expr(answer, "your answer")
-        except Exception as err:  # a bad string, NaN, ...
-            raise _Unreadable(f"could not read your answer ({err})") from None
-    raise _Unreadable(f"could not read an answer of type {type(answer).__name__}; give a number or an expression")
-
-
-def _numeric(expr, subs):
-    value = complex(sympy.N(expr.subs(subs), 30))
-    if not (math.isfinite(value.real) and math.isfinite(value.imag)):
-        raise ZeroDivisionError
-    return value
-
-
-def close(a, b, *, rtol: float = 1e-9, atol: float = 1e-12) -> bool:
-    """True when sympy values *a* and *b* are equal: exactly, or at random points for
-    expressions with symbols, or within ``rtol`` for floating-point numbers."""
-    if isinstance(a, sympy.MatrixBase) or isinstance(b, sympy.MatrixBase):
-        if not (isinstance(a, sympy.MatrixBase) and isinstance(b, sympy.MatrixBase)) or a.shape != b.shape:
-            return False
-        return all(close(x, y, rtol=rtol, atol=atol) for x, y in zip(a, b))
-    a, b = sympy.sympify(a), sympy.sympify(b)
-    syms = sorted(a.free_symbols | b.free_symbols, key=str)
-    rng = random.Random(20261122)  # a local generator: no global random state is touched
-    trials = 5 if syms else 1
-    ok = 0
-    for _ in range(trials * 3):
-        subs = {s: sympy.Rational(rng.randint(2, 97), rng.randint(2, 97)) for s in syms}
-        try:
-            x, y = _numeric(a, subs), _numeric(b, subs)
-        except (ZeroDivisionError, TypeError, ValueError):
-            continue
-        if abs(x - y) > atol + rtol * max(abs(x), abs(y)):
-            return False
-        ok += 1
-        if ok >= trials:
-            return True
-    return False
-
-
-@dataclass(frozen=True)
-class Hint:
-    """A typical mistake: ``test(answer, expected) -> bool`` and what to say about it."""
-
-    test: Callable
-    message: str
-
-
-def _standard_hints(rtol):
-    def near(f):
-        def test(ans, exp):
-            try:
-                return close(ans, f(exp), rtol=rtol)
-            except Exception:
-                return False
-
-        return test
-
-    return [
-        Hint(near(lambda e: -e), "The size is right but the sign is not: check which way each mesh turns "
-             "(external meshes reverse the direction, internal ones keep it)."),
-        Hint(near(lambda e: 1 / e), "You have the reciprocal: check which speed goes on top "
-             "(in this book a ratio is output over input)."),
-        Hint(near(lambda e: -1 / e), "You have minus the reciprocal: check both which speed goes on top "
-             "and the sign."),
-    ]
-
-
-@dataclass(frozen=True)
-class Check:
-    """One exercise check. Call it with an answer to get a :class:`CheckResult`."""
-
-    name: str
-    compute: Callable
-    chapter: str = ""
-    question: str = ""
-    hints: tuple = ()
-    rtol: float = 1e-6
-    generic_hint: str = "Go back to the Willis equation of each gear pair and write it out step by step."
-    standard_hints: bool = True
-    accept: Callable | None = field(default=None, compare=False)
-    _memo: dict = field(default_factory=dict, compare=False, repr=False)
+        return (f"<check {self.exercise} {self.title!r} ({'★' * self.stars}, about {self.minutes} min): "
+                f"gl.check.{self.name}(answer)>")
 
     @property
-    def expected(self):
-        return self.compute()
+    def points(self) -> int:
+        """The points a grader gives for a right answer: the difficulty in stars."""
+        return self.stars
 
-    def _expected(self):
-        """``compute()``, computed once per check: a reader who tries again, or a page of
-        checks, does not redo the work (some enumerate an atlas). Matrices are kept immutable
-        so that nothing the check hands out can change it."""
-        if "value" not in self._memo:
-            value = self.compute()
-            if isinstance(value, sympy.MatrixBase):
-                value = sympy.ImmutableMatrix(value)
-            else:
-                value = sympy.sympify(value)
-            self._memo["value"] = value
-        return self._memo["value"]
+    @property
+    def predicts(self) -> bool:
+        """Whether the exercise asks for a prediction (:meth:`predict`) before the answer."""
+        return _SECRETS[self.name].prediction is not None
 
-    def __call__(self, answer) -> CheckResult:
+    @property
+    def variants(self) -> bool:
+        """Whether other numbers can be drawn (``variant=`` a student id)."""
+        return _SECRETS[self.name].params is not None
+
+    def given(self, variant=None) -> dict:
+        """The numbers of the problem statement for *variant* (the book's when ``None``)."""
+        return _given(self.name, variant_key(variant))
+
+    def statement(self, variant=None) -> str:
+        """The question with the numbers of *variant* filled in."""
+        given = self.given(variant)
+        return re.sub(r"\{(\w+)\}", lambda m: _show(given[m.group(1)]) if m.group(1) in given else m.group(0),
+                      self.question)
+
+    def info(self) -> dict:
+        """Plain data about the exercise (for a course kit's table of exercises)."""
+        return {"name": self.name, "exercise": self.exercise, "title": self.title, "stars": self.stars,
+                "minutes": self.minutes, "kind": self.kind, "chapter": self.chapter, "points": self.points,
+                "form": self.form, "variants": self.variants, "predicts": self.predicts}
+
+    def _result(self, passed, message, key, score=0.0, details=None) -> CheckResult:
+        message = _sentence(message)
+        return CheckResult(bool(passed), message, self.name, self.exercise, key,
+                           self.points, round(score * self.points, 6), MappingProxyType(dict(details or {})))
+
+    def predict(self, guess, variant=None) -> CheckResult:
+        """Record a prediction before computing (exercises of kind ``predict``)."""
         try:
-            return self._check(answer)
-        except Exception as err:  # a check must never crash on a reader's answer
-            return CheckResult(False, f"This answer could not be checked ({type(err).__name__}). "
-                               "Give a number, a fraction or a sympy expression.", self.name)
-
-    def _check(self, answer) -> CheckResult:
-        if self.accept is not None:
-            ok, message = self.accept(answer)
-            return CheckResult(bool(ok), message, self.name)
+            key = variant_key(variant)
+        except Unreadable as err:
+            return self._result(False, str(err), None)
+        secret = _SECRETS[self.name]
+        if secret.prediction is None:
+            return self._result(False, "This exercise asks for no prediction: give your answer to the check itself",
+                                key)
+        if (self.name, key) in _ATTEMPTED:
+            kept = _PREDICTIONS.get((self.name, key))
+            return self._result(False, f"Your answer has been checked already; the prediction you recorded before "
+                                f"it stands ({kept!r})", key, details={"prediction": kept, "recorded": True})
         try:
-            value = as_value(answer)
-        except _Unreadable as err:
-            return CheckResult(False, str(err)[0].upper() + str(err)[1:] + ".", self.name)
-        expected = self._expected()
-        if isinstance(expected, sympy.MatrixBase) != isinstance(value, sympy.MatrixBase):
-            shape = "a matrix or list" if isinstance(expected, sympy.MatrixBase) else "a single value"
-            return CheckResult(False, f"This question asks for {shape}.", self.name)
-        if isinstance(expected, sympy.MatrixBase) and expected.shape != value.shape:
-            return CheckResult(False, f"The shape is not right: expected {expected.shape[0]} x {expected.shape[1]} "
-                               "entries.", self.name)
-        if close(value, expected, rtol=self.rtol):
-            return CheckResult(True, "Well done.", self.name)
-        if not isinstance(expected, sympy.MatrixBase):
-            extra = value.free_symbols - expected.free_symbols if isinstance(value, sympy.Basic) else set()
-            if extra:
-                names = ", ".join(sorted(str(s) for s in extra))
-                return CheckResult(False, f"Your answer uses {names}, which the answer does not need.", self.name)
-        hints = list(self.hints) + (_standard_hints(self.rtol) if self.standard_hints else [])
-        for hint in hints:
-            try:
-                if hint.test(value, expected):
-                    return CheckResult(False, hint.message, self.name)
-            except Exception:
-                continue
-        return CheckResult(False, self.generic_hint, self.name)
+            option = secret.prediction.choice.option(guess)
+        except Unreadable as err:
+            return self._result(False, str(err), key)
+        _PREDICTIONS[(self.name, key)] = option
+        return self._result(True, f"Prediction recorded: {option!r}. Now compute the answer and check it", key,
+                            details={"prediction": option, "recorded": True})
+
+    def __call__(self, answer, variant=None) -> CheckResult:
+        try:
+            key = variant_key(variant)
+        except Unreadable as err:
+            return self._result(False, str(err), None)
+        secret = _SECRETS[self.name]
+        details = {}
+        if secret.prediction is not None:
+            if (self.name, key) not in _PREDICTIONS:
+                return self._result(False, f"First record your prediction: gl.check.{self.name}.predict(...) "
+                                    "with one of the options of the exercise", key)
+            details["prediction"] = _PREDICTIONS[(self.name, key)]
+        _ATTEMPTED.add((self.name, key))
+        try:
+            secret.spec.check_form(answer)
+        except Unreadable as err:
+            return self._result(False, str(err), key, details=details)
+        except Exception:  # the judge below says what is wrong in its own words
+            pass
+        try:
+            params, reference = _state(self.name, key)
+        except Exception as err:  # a bug in the check itself, not the reader's fault
+            return self._result(False, f"This check could not compute its reference ({type(err).__name__}); "
+                                "please report it", key)
+        try:
+            verdict = secret.spec.judge(answer, reference, params)
+        except Unreadable as err:
+            verdict = Verdict(False, str(err))
+        except RecursionError:
+            verdict = Verdict(False, "That answer is nested too deeply to read")
+        except Exception as err:  # a check never crashes on a reader's answer
+            verdict = Verdict(False, f"This answer could not be checked ({type(err).__name__}); give it in the form "
+                              f"the exercise asks for: {secret.spec.form}")
+        message = verdict.message
+        details.update(verdict.details)
+        if verdict.passed and secret.prediction is not None:
+            truth = secret.prediction.truth(reference, params)
+            right = details["prediction"] == truth
+            details["prediction_right"] = right
+            explain = secret.prediction.explain
+            explain = explain(params) if callable(explain) else explain
+            message = _sentence(message) + (" Your prediction was right." if right else
+                        f" Your prediction ({details['prediction']!r}) was not.") + (f" {explain}" if explain else "")
+        return self._result(verdict.passed, message, key, verdict.score if not verdict.passed else 1.0, details)
 
 
-def register(name: str, *, chapter: str = "", question: str = "", hints=(), rtol: float = 1e-6,
-             generic_hint: str | None = None, standard_hints: bool = True):
-    """Decorator: register a function that computes the expected answer as check *name*."""
+def register(name: str, *, exercise: str, title: str, stars: int = 1, minutes: int = 10, kind: str = "compute",
+             question: str = "", answer: Spec | None = None, data: Mapping | None = None,
+             params: Callable | None = None, predict: Prediction | None = None):
+    """Decorator: register the function that computes the reference answer as check *name*.
+
+    The function takes the problem's numbers as keyword arguments: ``data`` (the book's
+    numbers, the default variant) or what ``params(rng)`` draws for a variant. ``answer``
+    says what the answer looks like and how to diagnose a wrong one (default: a number,
+    :class:`~gearlib.check.Value`). The decorated name becomes the :class:`Check`; the
+    function is kept out of its reach. See the API page for a worked example.
+    """
+    from ._value import Value
+
+    if not _EXERCISE.match(str(exercise)):
+        raise ValueError(f"check {name!r}: exercise must be 'chapter.k' such as '1.3', got {exercise!r}")
+    if stars not in (1, 2, 3):
+        raise ValueError(f"check {name!r}: stars must be 1, 2 or 3, got {stars!r}")
+    if kind not in KINDS:
+        raise ValueError(f"check {name!r}: kind must be one of {', '.join(KINDS)}, got {kind!r}")
+    if not (isinstance(minutes, int) and 0 < minutes <= 240):
+        raise ValueError(f"check {name!r}: minutes must be a whole number of minutes, got {minutes!r}")
+    spec = answer if answer is not None else Value()
 
     def deco(fn):
-        kw = {}
-        if generic_hint is not None:
-            kw["generic_hint"] = generic_hint
-        check = Check(name, fn, chapter, question or (fn.__doc__ or "").strip(), tuple(hints), rtol,
-                      standard_hints=standard_hints, **kw)
         if name in REGISTRY:
             raise ValueError(f"check {name!r} is registered twice")
+        taken = [c.name for c in REGISTRY.values() if c.exercise == exercise]
+        if taken:
+            raise ValueError(f"exercise {exercise} is already check {taken[0]!r}")
+        check = Check(name, exercise, title, stars, minutes, kind, question or (fn.__doc__ or "").strip(),
+                      spec.form)
+        _SECRETS[name] = _Secret(fn, spec, dict(data or {}), params, predict)
         REGISTRY[name] = check
         return check
 
     return deco
 
 
-def register_custom(name: str, accept: Callable, *, chapter: str = "", question: str = ""):
-    """Register a check that judges the answer itself: ``accept(answer) -> (ok, message)``.
+class _Custom(Spec):
+    form = "the answer the exercise asks for"
 
-    Use it for answers that are not values (a function, a set of links, a choice). The
-    message must not reveal the solution.
-    """
-    check = Check(name, lambda: None, chapter, question, accept=accept)
-    if name in REGISTRY:
-        raise ValueError(f"check {name!r} is registered twice")
-    REGISTRY[name] = check
-    return check
+    def __init__(self, accept):
+        self.accept = accept
+
+    def judge(self, answer, reference, params):
+        ok, message = self.accept(answer, **params)
+        return Verdict(bool(ok), message, float(bool(ok)))
+
+    def example(self, reference, params):  # pragma: no cover - a custom check knows no example
+        raise NotImplementedError
+
+
+def register_custom(name: str, accept: Callable, *, exercise: str, title: str, stars: int = 1, minutes: int = 10,
+                    kind: str = "compute", question: str = "", data=None, params=None) -> Check:
+    """A check that judges the answer itself: ``accept(answer, **numbers) -> (ok, message)``.
+    Prefer a spec (:class:`~gearlib.check.Choice`, :class:`~gearlib.check.Design`, ...): their
+    messages are tested against leaks for every check."""
+    return register(name, exercise=exercise, title=title, stars=stars, minutes=minutes, kind=kind,
+                    question=question, answer=_Custom(accept), data=data, params=params)(lambda **_: None)
+
+
+# for the tests of the machinery only: never shown to a reader
+def _reference(check: Check, variant=None):
+    return _state(check.name, variant_key(variant))
+
+
+def _example(check: Check, variant=None):
+    params, reference = _state(check.name, variant_key(variant))
+    return _SECRETS[check.name].spec.example(reference, params)
+
+
+def _forget_predictions() -> None:
+    _PREDICTIONS.clear()
+    _ATTEMPTED.clear()

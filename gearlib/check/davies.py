@@ -1,22 +1,25 @@
-"""Checks for the exercises of chapter 5, Davies' efficiency (``exercises/05_davies_efficiency.ipynb``)."""
+"""Checks for the exercises of chapter 5, Davies' efficiency (``exercises/05_davies_efficiency.ipynb``).
+
+Efficiencies are checked as efficiencies (exchanged input and output, the loss instead of the
+efficiency, one mesh or the product of the meshes), the friction coefficient as a length.
+Humpage's reducer (5.5) has a different efficiency per mesh, which the chapter does not
+compute; variants draw other efficiencies and teeth.
+"""
 
 from __future__ import annotations
 
-from .. import catalog
-from ..mechanism.data import Mechanism
-from ._core import Hint, close, register
+from fractions import Fraction
 
-_ZETA_PAIR = "A spur pair r1 = 1, r2 = 2, gear 1 driving, eta_12 = 0.97: the Coulomb coefficient zeta of the mesh."
+from ._choice import LinkId
+from ._core import register
+from ._value import Mistake, Value
+
+__all__ = ["davies_pair_zeta", "davies_pair_bearings", "davies_epicyclic_efficiency", "davies_recirculation",
+           "davies_humpage_efficiency", "davies_humpage_driver"]
 
 
-def _near(value, rtol=1e-4):
-    def test(answer, expected):
-        try:
-            return close(answer, value, rtol=rtol)
-        except Exception:
-            return False
-
-    return test
+def _eta(rng, lo=95, hi=99) -> float:
+    return rng.randint(lo * 10, hi * 10) / 1000
 
 
 def _pair_zeta(eta, driver_first=True):
@@ -24,129 +27,179 @@ def _pair_zeta(eta, driver_first=True):
     return r1 * r2 * (1 - eta) / (r1 + eta * r2) if driver_first else r1 * r2 * (1 - eta) / (r2 + eta * r1)
 
 
+def _pair():
+    from ..catalog import load
+
+    return load("laus_simple_pair")
+
+
 @register(
-    "davies_pair_zeta",
-    chapter="05",
-    question=_ZETA_PAIR,
-    hints=[
-        Hint(_near(_pair_zeta(0.97, driver_first=False)),
-             "That is the coefficient for gear 2 driving gear 1. Here gear 1 drives: the power reaching gear 2 is "
-             "eta_12 times the power gear 1 sends into the mesh."),
-        Hint(_near(0.03), "That is 1 - eta_12: zeta is a length (a lever arm), and it depends on both radii."),
-    ],
-    generic_hint="Write the mesh action as U (contact force) plus a friction torque zeta*U, take the powers at "
-    "gear 1 and gear 2 relative to the frame, and solve eta_12 = P_21/P_12 for zeta.",
+    "davies_pair_zeta", exercise="5.1", title="The friction coefficient of a mesh", stars=2, minutes=20,
+    kind="compute",
+    question="A spur pair with pitch radii r1 = 1 and r2 = 2 (gl.catalog.load('laus_simple_pair')), gear 1 "
+             "driving, has the ordinary efficiency eta_12 = {eta}. Derive the Coulomb coefficient zeta of the mesh "
+             "(a positive length, in the unit of the radii).",
+    data={"eta": 0.97}, params=lambda rng: {"eta": _eta(rng)},
+    answer=Value("length", figures=4, mistakes=[
+        Mistake(lambda e, p: _pair_zeta(p["eta"], driver_first=False), "That is the coefficient for gear 2 "
+                "driving gear 1. Here gear 1 drives: the power reaching gear 2 is eta_12 times the power gear 1 "
+                "sends into the mesh."),
+        Mistake(lambda e, p: 1 - p["eta"], "That is 1 - eta_12: zeta is a length (a lever arm), and it depends on "
+                "both radii."),
+        Mistake(lambda e, p: -e, "The size is right; the sign is not: zeta is asked as a positive length (the "
+                "library's signed coefficient is minus it here)."),
+    ], standard=False, generic="Write the mesh action as U (contact force) plus a friction torque zeta*U, take the "
+                               "powers at gear 1 and gear 2 relative to the frame, and solve eta_12 = P_21/P_12 for "
+                               "zeta."),
 )
-def davies_pair_zeta():
+def davies_pair_zeta(eta):
     from ..davies import efficiency
 
-    res = efficiency(catalog.load("laus_simple_pair"), 0, 1, 2, eta=0.97)
-    return abs(res.meshes[0].zeta)
+    return abs(efficiency(_pair(), 0, 1, 2, eta=eta).meshes[0].zeta)
+
+
+def _bearing_params(rng) -> dict:
+    return {"eta": _eta(rng, 95, 99), "eta_b": _eta(rng, 98, 99)}
+
+
+@register(
+    "davies_pair_bearings", exercise="5.2", title="Mesh and bearing losses together", stars=2, minutes=15,
+    kind="compute",
+    question="The same pair with eta_12 = {eta} also loses power in the two bearings that carry the input and the "
+             "output shafts: each port bearing, on its own, has an efficiency of {eta_b} in the sense of Laus's "
+             "eqs. (45) and (47). What is the overall efficiency of the pair?",
+    data={"eta": 0.97, "eta_b": 0.99}, params=_bearing_params,
+    answer=Value("efficiency", figures=4, mistakes=[
+        Mistake(lambda e, p: p["eta"], "That leaves out the two bearings: each takes its own share of the power."),
+        Mistake(lambda e, p: p["eta_b"] * p["eta"], "One bearing is missing: both port bearings lose power."),
+    ], generic="With the port bearings' efficiencies defined as in Laus eqs. (45) and (47), the overall efficiency "
+               "is a product."),
+)
+def davies_pair_bearings(eta, eta_b):
+    from ..davies import efficiency
+
+    mech = _pair()
+    zc = abs(efficiency(mech, 0, 1, 2, eta=eta).meshes[0].zeta)
+    za = (1 - eta_b) * (1 + zc) / eta_b  # Laus eqs. (46) and (48), gear 1 driving, r1 = 1, r2 = 2
+    zb = (1 - eta_b) * (2 - zc)
+    return efficiency(mech, 0, 1, 2, eta=eta, bearings={"A": za, "B": zb}).value
 
 
 def _epicyclic(z2=60, z4=35):
-    mech = catalog.load("laus_epicyclic")
+    from ..catalog import load
+
+    mech = load("laus_epicyclic")
     if (z2, z4) != (60, 35):
         mech = mech.with_gear_pair((2, 3), teeth=(z2, z4), radii=(z2, z4))
     return mech
 
 
 @register(
-    "davies_epicyclic_efficiency",
-    chapter="05",
-    question="Laus's epicyclic train (z = 80, 60, 30, 35), carrier 5 input, annulus 2 output, both meshes 0.98.",
-    hints=[
-        Hint(_near(0.88912), "That is eq. (78), the formula for annulus 2 as the input: the input/output choice "
-             "decides which formula applies, and here the carrier drives."),
-        Hint(_near(1.12474), "An efficiency above 1 is impossible: that formula assumes r1 > r2. Choose the formula "
-             "with the pitch radii (40 and 60 mm), not the tooth numbers (80 and 60)."),
-        Hint(_near(0.9604), "That is the efficiency of the train with the carrier held (0.98 squared). With the carrier "
-             "turning, the meshes handle 2.8 times the input power."),
-    ],
-    generic_hint="Find which gear drives in each mesh from the virtual power flow relative to the carrier, then use "
-    "the matching formula of Table 5 with eta_13 = eta_42 = 0.98.",
-    standard_hints=True,
+    "davies_epicyclic_efficiency", exercise="5.3", title="Which formula: the epicyclic train", stars=2,
+    minutes=20, kind="compute",
+    question="Laus's epicyclic train of the chapter (gl.catalog.load('laus_epicyclic'): annulus 1 held, carrier 5 "
+             "the input, annulus 2 the output; z = 80, 60, 30, 35, pitch radii 40, 60, 15 and 35 mm). Both meshes "
+             "have the ordinary efficiency {eta}. Decide which gear drives in each mesh, choose the right formula "
+             "of Table 5 and give the overall efficiency.",
+    data={"eta": 0.98}, params=lambda rng: {"eta": _eta(rng, 96, 99)},
+    answer=Value("efficiency", figures=4, meshes=lambda p: [p["eta"], p["eta"]], mistakes=[
+        Mistake(lambda e, p: _epicyclic_formula(p["eta"], 78), "That is eq. (78), the formula for "
+                "annulus 2 as the input: the input/output choice decides which formula applies, and here the "
+                "carrier drives."),
+        Mistake(lambda e, p: _epicyclic_formula(p["eta"], 77), "That is eq. (77), which holds when r1 > r2: "
+                "compare the pitch radii (40 and 60 mm), not the tooth numbers (80 and 60)."),
+    ], generic="Find which gear drives in each mesh from the virtual power flow relative to the carrier, then use "
+               "the matching formula of Table 5."),
 )
-def davies_epicyclic_efficiency():
+def davies_epicyclic_efficiency(eta):
     from ..davies import efficiency
 
-    return efficiency(_epicyclic(), 1, 5, 2, eta=0.98).value
+    return efficiency(_epicyclic(), 1, 5, 2, eta=eta).value
+
+
+def _epicyclic_formula(eta, eq: int):
+    """Laus's eqs. (76)-(78) (Table 5) for the chapter's radii: r1 r4 = 1400, r2 r3 = 900."""
+    e2, a, b = eta * eta, 1400, 900
+    return {76: e2 * (a - b) / (a - e2 * b), 77: (b - a) / (b - e2 * a), 78: (b - e2 * a) / (b - a)}[eq]
+
+
+def _recirculation_teeth(rng) -> dict:
+    z4 = rng.randint(33, 45)
+    return {"z2": z4 + 25, "z4": z4}
 
 
 @register(
-    "davies_recirculation",
-    chapter="05",
-    question="Epicyclic train with annulus 2 of 64 teeth and planet gear 4 of 39 teeth (module 2 mm), other data as "
-    "in the chapter: lossless virtual power through mesh 1-3 per unit input power.",
-    hints=[
-        Hint(_near(1.0), "That is the real power flow (seen from the frame). Measure the flow from the carrier 5."),
-        Hint(_near(2.8), "That is the value for the chapter's train (60 and 35 teeth); the radii changed."),
-    ],
-    generic_hint="Relative to the carrier the flow through mesh 1-3 is T_A t_A r1 r4 / (r1 r4 - r2 r3), with the "
-    "pitch radii in mm.",
+    "davies_recirculation", exercise="5.4", title="Power that recirculates", stars=2, minutes=15, kind="compute",
+    question="In the same train replace annulus 2 and the planet gear 4 by gears with {z2} and {z4} teeth (still "
+             "module 2 mm, so that r1 - r3 = r2 - r4 still holds). Without losses, how much power flows through "
+             "the mesh between annulus 1 and planet gear 3, as seen from the carrier, per unit input power? "
+             "Derive it from Laus's eq. (69).",
+    data={"z2": 64, "z4": 39}, params=_recirculation_teeth,
+    answer=Value("number", mistakes=[
+        Mistake(lambda e, p: 1, "That is the real power flow (seen from the frame). Measure the flow from the "
+                "carrier 5."),
+        Mistake(lambda e, p: Fraction(14, 5), "That is the value for the chapter's train (60 and 35 teeth); the "
+                "radii changed."),
+        Mistake(lambda e, p: -e, "The size is right; the sign is not: with the carrier as input, annulus 1 drives "
+                "gear 3 in this mesh."),
+    ], standard=False, generic="Relative to the carrier the flow through mesh 1-3 is T_A t_A r1 r4 / (r1 r4 - r2 "
+                               "r3), with the pitch radii in mm."),
 )
-def davies_recirculation():
+def davies_recirculation(z2, z4):
     from ..davies import efficiency
 
-    res = efficiency(_epicyclic(64, 39), 1, 5, 2, eta=1.0)
-    return res.mesh(1, 3).virtual_power
+    return efficiency(_epicyclic(z2, z4), 1, 5, 2, eta=1.0).mesh(1, 3).virtual_power
+
+
+def _humpage_params(rng) -> dict:
+    return {"eta12": _eta(rng, 97, 99), "eta25": _eta(rng, 97, 99), "eta43": _eta(rng, 97, 99)}
 
 
 @register(
-    "davies_humpage_efficiency",
-    chapter="05",
-    question="Humpage's bevel reducer (Nelson and Cipra's teeth), input 1, output 4, frame 5, every mesh 0.99.",
-    hints=[
-        Hint(_near(0.597708), "That is what the thesis's printed planet axis gives. Its carrier turns at 1155/2352 of "
-             "the input instead of 5/24: use the axis consistent with the pitch cones (or the Willis equations)."),
-        Hint(_near(0.970299), "That is 0.99 cubed: it ignores the power recirculating through the planet meshes."),
-    ],
-    generic_hint="Use formula (H1) of the chapter with eta_12 = eta_25 = eta_43 = 0.99 and the radii 20, 56, 24, 35, 76.",
+    "davies_humpage_efficiency", exercise="5.5", title="Humpage's reducer with three different meshes", stars=3,
+    minutes=25, kind="compute",
+    question="Humpage's bevel reducer with Nelson and Cipra's teeth (gl.catalog.humpage(): input 1, output 4, "
+             "frame 5; radii 20, 56, 24, 35, 76), with the geometrically consistent planet axis, has the mesh "
+             "efficiencies eta_12 = {eta12}, eta_25 = {eta25} and eta_43 = {eta43}. What is the overall "
+             "efficiency?",
+    data={"eta12": 0.99, "eta25": 0.98, "eta43": 0.985}, params=_humpage_params,
+    answer=Value("efficiency", figures=4, meshes=lambda p: [p["eta12"], p["eta25"], p["eta43"]], mistakes=[
+        Mistake(lambda e, p: _humpage({"eta12": 0.99, "eta25": 0.99, "eta43": 0.99}), "That is the efficiency with "
+                "every mesh at 0.99, the chapter's case: here the three meshes differ."),
+        Mistake(lambda e, p: _humpage(p, thesis_axis=True), "That is what the thesis's printed planet axis gives: "
+                "use the axis consistent with the pitch cones (or the Willis equations)."),
+    ], generic="Use formula (H1) of the chapter with the three mesh efficiencies and the radii 20, 56, 24, 35, 76."),
 )
-def davies_humpage_efficiency():
+def davies_humpage_efficiency(eta12, eta25, eta43):
+    return _humpage({"eta12": eta12, "eta25": eta25, "eta43": eta43})
+
+
+def _humpage(p, thesis_axis=False):
+    from ..catalog import humpage
     from ..davies import efficiency
 
-    return efficiency(catalog.humpage(), 5, 1, 4, eta=0.99).value
+    eta = {(1, 2): p["eta12"], (5, 2): p["eta25"], (2, 4): p["eta43"]}
+    if thesis_axis:
+        from ..davies.examples import laus_humpage_geometry
+
+        return efficiency(humpage(), 5, 1, 4, eta=eta, check=False, **laus_humpage_geometry(printed_axis=True)).value
+    return efficiency(humpage(), 5, 1, 4, eta=eta).value
 
 
 @register(
-    "davies_humpage_driver",
-    chapter="05",
-    question="Humpage's reducer driven from the output shaft 4 (frame 5): which link drives in the mesh between the "
-    "planet 2 and the fixed gear 5?",
-    hints=[
-        Hint(lambda a, e: close(a, 2), "With shaft 1 as the input the planet drives gear 5; reversing the ports "
-             "reverses every carrier-relative flow."),
-    ],
-    generic_hint="Take the lossless virtual power flow of the mesh relative to the carrier 6: its sign says which gear "
-    "gives power to the other. Answer with a link id.",
-    standard_hints=False,
+    "davies_humpage_driver", exercise="5.6", title="Who drives when the reducer runs backwards", stars=2,
+    minutes=10, kind="compute",
+    question="Drive Humpage's reducer from its output shaft 4 (frame 5 still held, shaft 1 now the output). In "
+             "the mesh between the planet 2 and the fixed gear 5, which link drives the other, as seen from the "
+             "carrier 6? Give the link id.",
+    answer=LinkId(links=lambda p: [1, 2, 4, 5, 6], wrong={
+        2: "With shaft 1 as the input the planet drives gear 5; reversing the ports reverses every carrier-relative "
+           "flow."},
+        generic="Take the lossless virtual power flow of the mesh relative to the carrier 6: its sign says which "
+                "gear gives power to the other."),
 )
 def davies_humpage_driver():
+    from ..catalog import humpage
     from ..davies import efficiency
 
-    res = efficiency(catalog.humpage(), 5, 4, 1, eta=0.98)
-    return res.mesh(5, 2).driver
-
-
-@register(
-    "davies_pair_bearings",
-    chapter="05",
-    question="Simple pair with eta_12 = 0.97 and Coulomb bearings of efficiency 0.99 at the input and at the output.",
-    hints=[
-        Hint(_near(0.97), "That leaves out the two bearings: each takes its own share of the power."),
-        Hint(_near(0.99 * 0.97), "One bearing is missing: both port bearings lose power."),
-    ],
-    generic_hint="With the port bearings' efficiencies defined as in Laus eqs. (45) and (47), the overall efficiency "
-    "is a product.",
-)
-def davies_pair_bearings():
-    from ..davies import efficiency
-
-    mech: Mechanism = catalog.load("laus_simple_pair")
-    # bearing coefficients giving 0.99 at each port (Laus eqs. 46 and 48, gear 1 driving)
-    zc = abs(efficiency(mech, 0, 1, 2, eta=0.97).meshes[0].zeta)
-    r1, r2 = 1, 2
-    za = (1 - 0.99) * (r1 + zc) / 0.99
-    zb = (1 - 0.99) * (r2 - zc)
-    return efficiency(mech, 0, 1, 2, eta=0.97, bearings={"A": za, "B": zb}).value
+    return efficiency(humpage(), 5, 4, 1, eta=0.98).mesh(5, 2).driver
