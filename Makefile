@@ -26,11 +26,12 @@ VENDOR := book/vendor
 VENDOR_STAMP := $(VENDOR)/_static/.staged
 CHROMIUM ?= $(shell command -v chromium || command -v chromium-browser || true)
 
-.PHONY: help venv vendor lint unit notebooks book build-book browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean
+.PHONY: help venv vendor lint unit notebooks book build-book tex pdf pdf-from-build browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean
 
 help:
 	@echo "make book     build the HTML book into book/_build/html (creates .venv if needed)"
-	@echo "make test     lint, unit and doc tests, book build (runs every notebook), browser test"
+	@echo "make pdf      the HTML book, then the whole book as one PDF, book/_build/latex/book.pdf (xelatex)"
+	@echo "make test     lint, unit and doc tests, book build (runs every notebook), PDF, browser tests"
 	@echo "make notebooks  every notebook under nbval (quicker than a book build when writing one)"
 	@echo "make lab      open JupyterLab at the book's start"
 	@echo "make browser  every page of the built book in headless Chromium, offline, and every chapter in JupyterLab"
@@ -76,7 +77,7 @@ lint: $(STAMP)
 # The browser tests' modules list the built pages when collected: left out here, so that
 # `make test` can run this beside a book build that is rewriting book/_build.
 unit: $(STAMP)
-	MPLBACKEND=Agg $(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 -m "not book and not browser" \
+	MPLBACKEND=Agg $(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 -m "not book and not browser and not pdf" \
 		--ignore=tests/test_browser.py --ignore=tests/test_lab.py
 
 notebooks: $(STAMP)
@@ -98,13 +99,50 @@ build-book: $(STAMP) $(VENDOR_STAMP)
 
 book: build-book
 
+# The PDF: Sphinx's LaTeX builder on a copy of the environment the HTML build left in
+# book/_build/.doctrees (it reads and executes nothing again: "0 changed"; a copy, because
+# Jupyter Book's LaTeX extension changes numfig_secnum_depth for the LaTeX build, and an
+# environment saved with it would make the next build read and execute every page), then
+# xelatex through latexmk (three runs and xindy for the index), then a check of the PDF
+# (tests/test_pdf.py). Debian's TeX Live, fonts and poppler-utils are installed with
+# apt-get where that is possible (root); about 86 MB to download, 600 MB installed.
+TEX_PACKAGES := texlive-xetex texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended \
+	latexmk xindy fonts-freefont-otf fonts-dejavu-core poppler-utils
+LATEX_DIR := book/_build/latex
+
+tex:
+	@if ! { command -v xelatex && command -v latexmk && command -v xindy && command -v pdftotext \
+			&& fc-list | grep -q FreeSerif && fc-list | grep -q "DejaVu Sans Mono"; } >/dev/null; then \
+		if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+			echo "installing Debian's TeX Live (xelatex), fonts and poppler-utils for the PDF"; \
+			apt-get -o DPkg::Lock::Timeout=900 update -qq && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=900 install -y -qq --no-install-recommends \
+				$(TEX_PACKAGES) >/dev/null; \
+		else \
+			echo "make pdf needs xelatex, latexmk, xindy, fonts and pdftotext: apt-get install --no-install-recommends $(TEX_PACKAGES)"; \
+			exit 1; \
+		fi; \
+	fi
+
+# after build-book (or make book), without building the HTML again
+pdf-from-build: $(STAMP) tex
+	@test -f book/_build/.doctrees/environment.pickle || { echo "no built book: run make book first"; exit 1; }
+	rm -rf book/_build/.doctrees-latex && cp -R book/_build/.doctrees book/_build/.doctrees-latex
+	JB_DOCTREES=book/_build/.doctrees-latex $(BIN)/python book/build.py . $(JB_FLAGS) --builder latex
+	$(MAKE) --no-print-directory -C $(LATEX_DIR) all-pdf LATEXMKOPTS="-xelatex -silent" \
+		LATEXOPTS="-interaction=nonstopmode -halt-on-error -file-line-error"
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m pdf tests/test_pdf.py
+	@echo "The PDF is in $(LATEX_DIR)/book.pdf"
+
+pdf: build-book
+	$(MAKE) --no-print-directory pdf-from-build
+
 # Debian's chromium for the browser test: installed when missing where that is possible
 # (root and apt-get); elsewhere the browser test skips and says why.
 chromium:
 	@if [ -z "$(CHROMIUM)" ]; then \
 		if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
 			echo "installing Debian's chromium for the browser test"; \
-			(apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null) \
+			(apt-get -o DPkg::Lock::Timeout=900 update -qq && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=900 install -y -qq chromium >/dev/null) \
 				|| echo "could not install chromium: the browser test will be skipped"; \
 		else \
 			echo "chromium is missing and cannot be installed here (needs root and apt-get): the browser test will be skipped"; \
@@ -124,16 +162,17 @@ browser-pages: $(STAMP) chromium
 browser-lab: $(STAMP) chromium
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_lab.py
 
+# after the build: its pages in Chromium, and the PDF from the same environment (side by side)
 book-then-pages: build-book
-	$(MAKE) --no-print-directory browser-pages
+	$(MAKE) --no-print-directory -j2 -O browser-pages pdf-from-build
 
 # The book build executes every notebook in a fresh kernel and fails on any error (as nbval
 # did here before; tests/test_repo.py checks that every notebook is in the book), so make
 # test does not run them twice; `make notebooks` runs them under nbval alone.
 # Three chains side by side on two cores, so that none leaves a core idle (kernel
 # start-ups, Sphinx's serial steps, a browser waiting for a kernel): the unit tests, the
-# chapters in JupyterLab, and the book build followed by its pages in Chromium. -O prints
-# each one's output whole when it ends.
+# chapters in JupyterLab, and the book build followed by its pages in Chromium and the PDF.
+# -O prints each one's output whole when it ends.
 test: lint
 	$(MAKE) --no-print-directory -j3 -O unit browser-lab book-then-pages
 

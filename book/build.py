@@ -17,16 +17,12 @@ import jupyter_book.sphinx
 from jupyter_book.cli.main import main
 
 jobs = int(os.environ.get("JB_JOBS") or min(4, os.cpu_count() or 1))
-jupyter_book.sphinx.build_sphinx = functools.partial(jupyter_book.sphinx.build_sphinx, jobs=jobs)
+# JB_DOCTREES: another doctree folder (the PDF build reads a copy of the HTML build's, make pdf)
+doctrees = {"doctreedir": os.environ["JB_DOCTREES"]} if os.environ.get("JB_DOCTREES") else {}
+jupyter_book.sphinx.build_sphinx = functools.partial(jupyter_book.sphinx.build_sphinx, jobs=jobs, **doctrees)
 
 
-def _declare_multitoc_parallel_safe():
-    """Jupyter Book's sphinx_multitoc_numbering does not say whether it is safe for parallel
-    reading, so Sphinx would read serially (and warn, which -W makes an error). It only
-    replaces the toctree collector's ``assign_section_numbers``, which Sphinx runs in the
-    main process after the workers' environments are merged, so it is safe: say so."""
-    import sphinx_multitoc_numbering as ext
-
+def _declare_parallel_safe(ext):
     setup = ext.setup
 
     def parallel_setup(app):
@@ -35,7 +31,25 @@ def _declare_multitoc_parallel_safe():
     ext.setup = parallel_setup
 
 
-_declare_multitoc_parallel_safe()
+def _declare_jupyter_book_extensions_parallel_safe():
+    """Two of Jupyter Book's extensions do not say whether they are safe for parallel
+    reading, so Sphinx would read serially (and warn, which -W makes an error). Both are:
+
+    * sphinx_multitoc_numbering only replaces the toctree collector's
+      ``assign_section_numbers``, which Sphinx runs in the main process after the workers'
+      environments are merged;
+    * sphinx_jupyterbook_latex (``latex: use_jupyterbook_latex`` in book/_config.yml, for the
+      PDF) keeps nothing in the environment: its read-time transforms only mark up each
+      page's own doctree (skipped by the HTML writer); the rest runs in the LaTeX build's
+      post-transforms and its ``builder-inited``."""
+    import sphinx_jupyterbook_latex
+    import sphinx_multitoc_numbering
+
+    _declare_parallel_safe(sphinx_multitoc_numbering)
+    _declare_parallel_safe(sphinx_jupyterbook_latex)
+
+
+_declare_jupyter_book_extensions_parallel_safe()
 
 
 def _one_page_per_chunk(source_dir: str):

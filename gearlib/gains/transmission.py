@@ -138,6 +138,11 @@ class ShiftTable:
             lines.append(f"  {r.mode}: ratio {format_value(r.ratio, 10)} (null space {r.nullspace.real:.10g})")
         return "\n".join(lines)
 
+    def _repr_pretty_(self, p, cycle):
+        """IPython's text/plain (the PDF book, a terminal): the table of :meth:`__str__`, not the
+        dataclass fields."""
+        p.text(str(self))
+
     def _repr_html_(self) -> str:
         body = "".join(
             f"<tr><td>{r.mode.name}</td><td>{r.mode.ground}</td><td>{r.mode.input}</td><td>{r.mode.output}</td>"

@@ -38,7 +38,7 @@ EXPORTS = {
     "sketch": ("Sketch", "Block", "Line", "AxisLine", "Symbol", "Label", "sketch_layout", "draw_sketch",
                "figure_size"),
     "widgets": ("Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png",
-                "encode_png"),
+                "encode_png", "with_snapshot"),
 }
 
 TOP = (

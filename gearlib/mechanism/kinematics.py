@@ -260,6 +260,11 @@ class Solution:
         head = f"speeds of {self.mechanism.name!r} (ground {self.constraints.ground}, method {self.method})"
         return "\n".join([head] + [f"  {str(i):>{w}}  {name:<{n}}  {val}" for i, name, val in rows])
 
+    def _repr_pretty_(self, p, cycle):
+        """IPython's text/plain (the PDF book, a terminal): the table of :meth:`__str__`, not the
+        dataclass fields."""
+        p.text(str(self))
+
     def _repr_html_(self) -> str:
         rows = "".join(
             f"<tr><td>{i}</td><td>{name}</td><td style='text-align:right'>{val}</td></tr>" for i, name, val in self.table()

@@ -27,7 +27,8 @@ from .data import Mechanism
 from .kinematics import speeds
 from .plot import _axes
 
-__all__ = ["Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png", "encode_png"]
+__all__ = ["Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png", "encode_png",
+           "with_snapshot"]
 
 
 class Canvas:
@@ -265,7 +266,22 @@ class Explorer:
         return self._widget
 
     def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+        return with_snapshot(self.widget._repr_mimebundle_(**kwargs), self.image)
+
+
+def with_snapshot(bundle: dict | None, image: bytes) -> dict | None:
+    """A widget's display data with its current picture added as ``image/png``: what shows
+    where no widget manager runs (the PDF book, nbconvert, a notebook viewer). Frontends
+    and the HTML book that render widgets prefer the widget view; the text repr stays last.
+
+    >>> sorted(with_snapshot({"text/plain": "VBox()"}, b"\\x89PNG"))
+    ['image/png', 'text/plain']
+    """
+    if bundle is None or not image:
+        return bundle
+    import base64
+
+    return {**bundle, "image/png": base64.b64encode(image).decode("ascii")}
 
 
 class SpeedExplorer(Explorer):

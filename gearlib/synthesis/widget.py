@@ -97,7 +97,9 @@ class DGMExplorer:
         return self._widget
 
     def _repr_mimebundle_(self, **kwargs):
-        return self.widget._repr_mimebundle_(**kwargs)
+        from ..mechanism.widgets import with_snapshot
+
+        return with_snapshot(self.widget._repr_mimebundle_(**kwargs), self.image)
 
 
 def dgm_explorer(chains, n_terminals: int = 3) -> DGMExplorer:
