@@ -21,12 +21,16 @@ LINK, GROUP, PAIR = 0, 1, 2  # node kinds
 
 
 def structure(n: int, groups, triples, with_groups: bool):
-    """``(adj, kind)``: ``adj[v]`` the ``(edge kind, node)`` of node *v*, ``kind[v]`` its kind.
+    """``(graph, kind)``: the skeleton's graph as :func:`refine` reads it, and the node kinds.
 
     Nodes ``0..n-1`` are the links, then one per group (if *with_groups*), then one per triple.
+    ``graph`` is ``(size, general, pairs)``: ``general`` lists ``(node, [(edge kind * scale,
+    neighbour), ...])`` for the links and groups, ``pairs`` lists ``(node, carrier, gear,
+    gear)`` for the triples, whose three edges need no sorting.
     """
     adj = [[] for _ in range(n)]
     kind = [LINK] * n
+    pairs = []
     if with_groups:
         for g in groups:
             node = len(adj)
@@ -36,25 +40,38 @@ def structure(n: int, groups, triples, with_groups: bool):
                 adj[v].append((AXIS, node))
     for a, b, c in triples:
         node = len(adj)
-        adj.append([(MESH, a), (MESH, b), (CARRIER, c)])
+        adj.append(None)
         kind.append(PAIR)
+        pairs.append((node, c, a, b))
         adj[a].append((MESH, node))
         adj[b].append((MESH, node))
         adj[c].append((CARRIER, node))
-    return adj, kind
+    size = len(adj)
+    scale = 4 * size + 4
+    general = [(v, [(k * scale, u) for k, u in nbrs]) for v, nbrs in enumerate(adj) if nbrs is not None]
+    return (size, general, pairs), kind
 
 
-def refine(adj, colour: list) -> list:
+def refine(graph, colour: list) -> list:
     """Colour refinement: a node's new colour ranks (its colour, the sorted (edge kind,
     colour) of its neighbours) among all nodes'; repeated until no cell splits.
 
-    Colours are non-negative integers below ``4 * len(adj)`` (the search's branch colours
-    stay below that); the ranks come out ``0, 1, ...`` in the order of the signatures.
+    Colours are non-negative integers below ``4 * size`` (the search's branch colours stay
+    below that); the ranks come out ``0, 1, ...`` in the order of the signatures.
     """
-    scale = 4 * len(adj) + 4
+    size, general, pairs = graph
+    scale = 4 * size + 4
+    on_carrier, on_gear = CARRIER * scale, MESH * scale
     count = len(set(colour))
     while True:
-        sig = [(colour[v], *sorted(k * scale + colour[u] for k, u in nbrs)) for v, nbrs in enumerate(adj)]
+        sig = [None] * size
+        for v, nbrs in general:
+            sig[v] = (colour[v], *sorted([k + colour[u] for k, u in nbrs]))
+        for v, c, a, b in pairs:
+            x, y = colour[a], colour[b]
+            if x > y:
+                x, y = y, x
+            sig[v] = (colour[v], on_carrier + colour[c], on_gear + x, on_gear + y)
         order = {s: i for i, s in enumerate(sorted(set(sig)))}
         colour = [order[s] for s in sig]
         if len(order) == count:
@@ -77,11 +94,13 @@ def canonical(n: int, groups, triples, *, with_groups: bool = True):
     >>> canonical(3, [(0, 1), (0, 2)], [(1, 2, 0)])[0]
     (((0, 1), (0, 2)), ((1, 2, 0),))
     """
-    adj, kind = structure(n, groups, triples, with_groups)
-    best = [None, None]
+    graph, kind = structure(n, groups, triples, with_groups)
+    best = [None, None, ()]  # code, perm, the path of links individualised to reach it
+    path = []
 
     def search(colour):
-        colour = refine(adj, colour)
+        """Explore below this node; return the depth to climb back to (None: go on)."""
+        colour = refine(graph, colour)
         cells = {}
         for v in range(n):
             cells.setdefault(colour[v], []).append(v)
@@ -92,11 +111,22 @@ def canonical(n: int, groups, triples, *, with_groups: bool = True):
                 perm[v] = i
             code = code_of(perm, groups, triples, with_groups)
             if best[0] is None or code < best[0]:
-                best[0], best[1] = code, perm
-            return
+                best[0], best[1], best[2] = code, perm, tuple(path)
+            elif code == best[0]:
+                # The two leaves differ by an automorphism that fixes the colours where
+                # their paths part and maps one branch there onto the other: the rest of
+                # this branch repeats codes already seen.
+                return next((d for d, (x, y) in enumerate(zip(path, best[2])) if x != y), len(path))
+            return None
         cell = cells[min(c for c, vs in cells.items() if len(vs) > 1)]
+        depth = len(path)
         for v in cell:
-            search([2 * c + (u != v) for u, c in enumerate(colour)])
+            path.append(v)
+            back = search([2 * c + (u != v) for u, c in enumerate(colour)])
+            path.pop()
+            if back is not None and back < depth:
+                return back
+        return None
 
     search(kind)
     return best[0], dict(enumerate(best[1]))
@@ -113,8 +143,8 @@ def automorphisms(n: int, groups) -> tuple:
     >>> automorphisms(3, [frozenset({0, 1}), frozenset({1, 2})])
     ((0, 1, 2), (2, 1, 0))
     """
-    adj, kind = structure(n, groups, (), True)
-    colour = refine(adj, kind)
+    graph, kind = structure(n, groups, (), True)
+    colour = refine(graph, kind)
     same = [[w for w in range(n) if colour[w] == colour[v]] for v in range(n)]
     group_set = {frozenset(g) for g in groups}
     closing = [[g for g in groups if max(g) == v] for v in range(n)]
