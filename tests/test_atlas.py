@@ -654,3 +654,40 @@ def test_generic_ratios_and_the_counting_rule_reject_the_same_choices(links, dof
     for groups in _trees.shapes(links):
         for triples in itertools.combinations(_chains._candidates(links, groups), picks):
             assert _valid(links, triples) == _counting_rule(links, triples), (groups, triples)
+
+
+def _leaves(sk, with_groups):
+    """How many leaves the canonical search visits on a skeleton (its symmetry, roughly)."""
+    from gearlib.synthesis import _canon
+    from unittest import mock
+
+    seen = []
+    real = _canon.code_of
+    with mock.patch.object(_canon, "code_of", lambda *a: seen.append(1) or real(*a)):
+        _canon.canonical(sk.n, sk.groups, sk.triples, with_groups=with_groups)
+    return len(seen)
+
+
+@pytest.mark.parametrize("with_groups", [True, False])
+def test_canonical_codes_of_the_most_symmetric_chains_do_not_depend_on_the_numbering(with_groups):
+    """The chains whose search tree branches most (many symmetric planets or gears): renumbered
+    at random, each keeps its code; and chains of different codes are not isomorphic (VF2)."""
+    sks = [_chains.Skeleton(n, tuple(sorted(g)), t) for n, axes in ((8, 6), (9, 8)) for g in _trees.shapes(n)
+           if len(g) >= axes for t in _chains._tree_chains(n, g, n - 2)]  # many axes: many symmetric branches
+    deep = [sk for sk in sks if _leaves(sk, with_groups) >= 6]
+    assert len(deep) >= 20
+    rnd = random.Random(3)
+    codes = []
+    for sk in deep:
+        code = _chains.canonical(sk.n, sk.groups, sk.triples, with_groups=with_groups)[0]
+        codes.append(code)
+        for _ in range(4):
+            p = list(range(sk.n))
+            rnd.shuffle(p)
+            triples = [(p[b], p[a], p[c]) if rnd.random() < 0.5 else (p[a], p[b], p[c]) for a, b, c in sk.triples]
+            rnd.shuffle(triples)
+            groups = [tuple(p[v] for v in g) for g in sk.groups]
+            rnd.shuffle(groups)
+            assert _chains.canonical(sk.n, groups, triples, with_groups=with_groups)[0] == code
+    labels = _vf2_classes([_skeleton_graph(sk.groups, sk.triples, with_groups) for sk in deep])
+    assert len({(c, lab) for c, lab in zip(codes, labels)}) == len(set(codes)) == len(set(labels))
