@@ -314,6 +314,44 @@ def symbolic():
     return rows
 
 
+# ----------------------------------------------------------------------------- the atlas to nine links
+@case
+def atlas_counts():
+    """The atlas counted at both levels for eight and nine links in one fresh interpreter
+    (`python -m gearlib atlas --links 8 9 --save ...`): nine links timed against eight. The
+    run is saved, with its provenance, as the stored counts chapter 6 shows
+    (gearlib/synthesis/data/atlas_counts.json), and compared with Yang and Ding (2019)."""
+    import json
+    import pathlib
+
+    from gearlib.synthesis import counts
+
+    root = pathlib.Path(__file__).resolve().parent.parent
+    path = counts.STORED.relative_to(root)
+    limit = 600.0
+    try:
+        out = subprocess.run([sys.executable, "-m", "gearlib", "atlas", "--links", "8", "9", "--save", str(path),
+                              "--json"], capture_output=True, text=True, timeout=2 * limit, check=True, cwd=root)
+    except subprocess.TimeoutExpired:
+        return [Row("atlas: 9 links, both levels", float("inf"), None, "-", f"under {limit:.0f} s", False)]
+    found = {c["links"]: c for c in json.loads(out.stdout)["atlas"]}
+    stored = counts.stored_counts(root / path)
+    rows = [Row("atlas: 9 links, both levels (1 dof)", found[9]["seconds"], found[8]["seconds"],
+                "8 links, both levels, same run", f"under {limit / 60:.0f} min (processor time "
+                f"{found[9]['cpu_seconds']:.0f} s against {found[8]['cpu_seconds']:.1f} s; peak memory "
+                f"{stored.peak_memory_mb:.0f} MB)", found[9]["seconds"] < limit)]
+    for links in (8, 9):
+        verdicts = []
+        for level in found[links]["levels"]:
+            for p in level["published"]:
+                if p["count"] is not None and p["source"].startswith("Yang"):
+                    verdicts.append((level["graphs"], level["enumerated"], p["count"]))
+        text = "; ".join(f"{g} {ours} (published {theirs})" for g, ours, theirs in verdicts)
+        rows.append(Row(f"atlas: {links}-link counts = Yang and Ding (2019)", found[links]["seconds"], None, "-",
+                        f"equal: {text}", all(ours == theirs for _, ours, theirs in verdicts)))
+    return rows
+
+
 # ----------------------------------------------------------------------------- widgets
 def _widget_row(name, ex, updates):
     """Mean time of a compute-and-redraw callback over a sweep of *updates* (each state

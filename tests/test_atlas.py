@@ -9,7 +9,9 @@ with seven links; Chen, Yao and Lee (2003): "50 two-DOF seven-link GKC"; Yang, D
 seven links; Buchsbaum and Freudenstein (1970) as quoted: 2 four-link and 6 five-link trains.
 """
 
+import datetime
 import itertools
+import json
 import random
 
 import numpy as np
@@ -18,7 +20,8 @@ import pytest
 import sympy
 
 import gearlib as gl
-from gearlib.synthesis import _chains, atlas
+from gearlib.synthesis import _chains, _trees, atlas
+from cli_tools import run
 
 
 # --------------------------------------------------------------------- published counts
@@ -328,3 +331,363 @@ def test_small_cases_have_no_gear_pairs_to_place():
     (m,) = atlas.geared_chains(3, 1)
     assert [str(c) for c in gl.fundamental_circuits(m)] == ["(2,3)(1)"]
     assert sympy.Symbol("e_2_3") == m.gear_pairs[0].e
+
+
+# --------------------------------------------------------------------- counting to nine links
+# Yang, Ding et al. (2019, abstract): 81, 647, 6360 and 71,837 displacement graphs, 27, 152,
+# 1070 and 8654 rotation graphs of one-dof trains with 6, 7, 8 and 9 links.
+YANG_DING = {6: (81, 27), 7: (647, 152), 8: (6360, 1070), 9: (71837, 8654)}
+
+
+@pytest.mark.parametrize("links", [6, 7, 8])
+def test_chain_counts_match_yang_and_ding_up_to_eight_links(links):
+    c = atlas.chain_counts(links)
+    assert (c.links, c.dof, c.coaxial, c.kinematic) == (links, 1, *YANG_DING[links])
+    assert (c.count("coaxial"), c.count("kinematic")) == YANG_DING[links]
+
+
+@pytest.mark.parametrize(("links", "dof"), [(3, 1), (4, 1), (5, 1), (5, 2), (6, 1), (6, 2), (6, 3), (7, 2)])
+def test_chain_counts_are_the_lengths_of_the_atlas(links, dof):
+    """Counted without mechanisms (chain_counts) and built as mechanisms (geared_chains): one number."""
+    for frac in (False, True, "only"):
+        c = atlas.chain_counts(links, dof, fractionated=frac)
+        assert c.coaxial == len(atlas.geared_chains(links, dof, fractionated=frac))
+        assert c.kinematic == len(atlas.geared_chains(links, dof, fractionated=frac, level="kinematic"))
+
+
+def test_count_table_reaches_eight_links_and_knows_nine():
+    rows = atlas.count_table(8)
+    by = {(r.links, r.dof, r.level, r.source): r for r in rows}
+    assert by[(8, 1, "coaxial", "Yang, Ding et al. (2019)")].enumerated == 6360
+    assert by[(8, 1, "kinematic", "Yang, Ding et al. (2019)")].enumerated == 1070
+    assert {(p.links, p.level, p.count) for p in atlas.PUBLISHED_COUNTS if p.links == 9} == {
+        (9, "coaxial", 71837), (9, "kinematic", 8654)}
+
+
+def test_counts_in_two_processes_are_the_counts_in_one():
+    one, two = atlas.chain_counts(7, 1), atlas.chain_counts(7, 1, workers=2)
+    assert (one.coaxial, one.kinematic) == (two.coaxial, two.kinematic) == YANG_DING[7]
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "words"),
+    [({"n_links": 1}, "n_links"), ({"n_links": 10}, "n_links must be an integer from 2 to 9"),
+     ({"n_links": 7.0}, "n_links"), ({"n_links": 6, "dof": 0}, "dof"), ({"n_links": 6, "dof": True}, "dof"),
+     ({"n_links": 6, "fractionated": "yes"}, "fractionated"), ({"n_links": 6, "workers": 0}, "workers")],
+)
+def test_bad_count_arguments_give_clear_errors(kwargs, words):
+    with pytest.raises(gl.DataFormatError, match=words):
+        atlas.chain_counts(**kwargs)
+
+
+def test_a_count_names_its_levels():
+    with pytest.raises(gl.DataFormatError, match="level"):
+        atlas.chain_counts(5).count("rotation")
+
+
+# --------------------------------------------------------------------- the search, checked by networkx
+def _skeleton_graph(groups, triples, with_groups=True):
+    """A skeleton as a networkx graph, built here: link, group and gear-pair nodes."""
+    g = nx.Graph()
+    links = {v for t in triples for v in t} | {v for grp in groups for v in grp}
+    g.add_nodes_from((("l", v) for v in links), kind="link")
+    if with_groups:
+        for k, grp in enumerate(groups):
+            g.add_node(("g", k), kind="group")
+            g.add_edges_from(((("g", k), ("l", v)) for v in grp), kind="axis")
+    for k, (a, b, c) in enumerate(triples):
+        g.add_node(("p", k), kind="pair")
+        g.add_edges_from([(("p", k), ("l", a)), (("p", k), ("l", b))], kind="mesh")
+        g.add_edge(("p", k), ("l", c), kind="carrier")
+    return g
+
+
+def _vf2_classes(graphs):
+    """The isomorphism class of each graph (an index), by Weisfeiler-Lehman hash and VF2."""
+    reps, out = {}, []
+    same = {"node_match": lambda x, y: x["kind"] == y["kind"], "edge_match": lambda x, y: x["kind"] == y["kind"]}
+    for g in graphs:
+        bucket = reps.setdefault(nx.weisfeiler_lehman_graph_hash(g, node_attr="kind", edge_attr="kind"), [])
+        for rep, label in bucket:
+            if nx.is_isomorphic(g, rep, **same):
+                out.append(label)
+                break
+        else:
+            label = sum(len(b) for b in reps.values())
+            bucket.append((g, label))
+            out.append(label)
+    return out
+
+
+def _generic_triples(n, triples, seed=11):
+    """Rank of the Willis rows and the null-space basis, numpy with random ratios (not gearlib's test)."""
+    rnd = random.Random(seed)
+    w = np.zeros((len(triples), n))
+    for row, (a, b, c) in zip(w, triples):
+        e = rnd.choice([-1, 1]) * rnd.uniform(0.3, 3.0)
+        row[b] += 1
+        row[a] -= e
+        row[c] += e - 1
+    _, s, vt = np.linalg.svd(w)
+    rank = int((s > 1e-9).sum())
+    return rank, vt[rank:].T
+
+
+def _valid(n, triples):
+    if {v for t in triples for v in t} != set(range(n)):
+        return False
+    rank, basis = _generic_triples(n, triples)
+    return rank == len(triples) and all(np.abs(basis[i] - basis[j]).max() > 1e-6
+                                        for i, j in itertools.combinations(range(n), 2))
+
+
+@pytest.mark.parametrize(("links", "dof"), [(5, 1), (6, 1), (6, 2), (7, 2)])
+def test_the_pruned_search_finds_each_chain_of_a_tree_once(links, dof):
+    """On every hypertree: every choice of gear pairs (all combinations, filtered with numpy)
+    falls into the VF2 isomorphism class of exactly one chain the search keeps."""
+    picks = links - 1 - dof
+    for groups in _trees.shapes(links):
+        kept = _chains._tree_chains(links, groups, picks)
+        cands = _chains._candidates(links, groups)
+        every = [t for t in itertools.combinations(cands, picks) if _valid(links, t)]
+        labels = _vf2_classes([_skeleton_graph(groups, t) for t in kept + every])
+        assert len(set(labels[: len(kept)])) == len(kept), groups  # pairwise non-isomorphic
+        assert set(labels[len(kept):]) == set(labels[: len(kept)]), groups  # and every chain is one of them
+        assert all(_valid(links, t) for t in kept)
+
+
+def _networkx_hypertrees(n):
+    """Hypertrees from networkx's non-isomorphic trees (bipartite, groups of degree >= 2)."""
+    out = []
+    for k in range(1, n):
+        for tree in nx.nonisomorphic_trees(n + k):
+            colour = nx.bipartite.color(tree)
+            for side in (0, 1):
+                links = [v for v in tree if colour[v] == side]
+                groups = [v for v in tree if colour[v] != side]
+                if len(links) == n and all(tree.degree(g) >= 2 for g in groups):
+                    out.append(tree)
+    return out
+
+
+@pytest.mark.parametrize("links", [3, 4, 5, 6, 7])
+def test_hypertrees_grown_link_by_link_are_networkx_trees(links):
+    ours = [nx.Graph((("l", v), ("g", k)) for k, g in enumerate(groups) for v in g) for groups in _trees.shapes(links)]
+    for g in ours:
+        nx.set_node_attributes(g, {node: node[0] for node in g}, "kind")
+        assert nx.is_tree(g) and all(g.degree(x) >= 2 for x in g if x[0] == "g")
+    theirs = _networkx_hypertrees(links)
+    assert len(ours) == len(theirs)
+    # pairwise non-isomorphic with links on links: every class once
+    labels = _vf2_classes_plain(ours)
+    assert len(set(labels)) == len(ours)
+
+
+def _vf2_classes_plain(graphs):
+    out, reps = [], []
+    for g in graphs:
+        for k, r in enumerate(reps):
+            if nx.is_isomorphic(g, r, node_match=lambda x, y: x["kind"] == y["kind"]):
+                out.append(k)
+                break
+        else:
+            reps.append(g)
+            out.append(len(reps) - 1)
+    return out
+
+
+@pytest.mark.parametrize("with_groups", [True, False])
+def test_canonical_codes_decide_isomorphism_as_vf2_does(with_groups):
+    sks = _chains.skeletons(7, 1) + _chains.skeletons(6, 2)
+    codes = [_chains.canonical(sk.n, sk.groups, sk.triples, with_groups=with_groups)[0] for sk in sks]
+    labels = _vf2_classes([_skeleton_graph(sk.groups, sk.triples, with_groups) for sk in sks])
+    pairs = {(c, lab) for c, lab in zip(codes, labels)}
+    assert len(pairs) == len(set(codes)) == len(set(labels))  # the same partition
+    rnd = random.Random(5)
+    for sk in rnd.sample(sks, 60):  # renumbered, pairs reordered and gears swapped: the same code
+        p = list(range(sk.n))
+        rnd.shuffle(p)
+        groups = [tuple(p[v] for v in g) for g in sk.groups][::-1]
+        triples = [(p[b], p[a], p[c]) for a, b, c in sk.triples]
+        rnd.shuffle(triples)
+        assert _chains.canonical(sk.n, groups, triples, with_groups=with_groups)[0] == codes[sks.index(sk)]
+
+
+def _reference_canonical(n, groups, triples, with_groups):
+    """The canonical search as gearlib wrote it when the atlas stopped at eight links (dicts and
+    edge names, no pruning by automorphisms), kept here: the chains' names come from it."""
+    adj, kind, node = {i: [] for i in range(n)}, dict.fromkeys(range(n), 0), n
+    for g in groups if with_groups else ():
+        adj[node], kind[node] = [("axis", v) for v in g], 1
+        for v in g:
+            adj[v].append(("axis", node))
+        node += 1
+    for a, b, c in triples:
+        adj[node], kind[node] = [("mesh", a), ("mesh", b), ("carrier", c)], 2
+        adj[a].append(("mesh", node))
+        adj[b].append(("mesh", node))
+        adj[c].append(("carrier", node))
+        node += 1
+
+    def refine(colour):
+        count = len(set(colour.values()))
+        while True:
+            sig = {v: (colour[v], tuple(sorted((k, colour[u]) for k, u in adj[v]))) for v in adj}
+            order = {s: i for i, s in enumerate(sorted(set(sig.values())))}
+            colour = {v: order[sig[v]] for v in adj}
+            if len(order) == count:
+                return colour
+            count = len(order)
+
+    best = []
+
+    def search(colour):
+        colour = refine(colour)
+        cells = {}
+        for v in range(n):
+            cells.setdefault(colour[v], []).append(v)
+        open_cells = [c for c in sorted(cells) if len(cells[c]) > 1]
+        if not open_cells:
+            perm = {v: i for i, v in enumerate(sorted(range(n), key=colour.__getitem__))}
+            g = tuple(sorted(tuple(sorted(perm[v] for v in grp)) for grp in groups)) if with_groups else ()
+            t = tuple(sorted((min(perm[a], perm[b]), max(perm[a], perm[b]), perm[c]) for a, b, c in triples))
+            best.append((g, t))
+            return
+        for v in cells[open_cells[0]]:
+            search({u: 2 * c + (0 if u == v else 1) for u, c in colour.items()})
+
+    search(dict(kind))
+    return min(best)
+
+
+@pytest.mark.parametrize(("links", "dof"), [(5, 1), (6, 1), (6, 2), (7, 1), (7, 2)])
+def test_chain_names_are_the_numbering_they_always_had(links, dof):
+    """Each chain of the catalogue is its own canonical form under the reference search, and the
+    catalogue is in the order of those codes: GKC n-dof-k names the chain it always named."""
+    cat = atlas._catalogue(links, dof)
+    keys = []
+    for sk, frac, kin in cat:
+        code = _reference_canonical(links, sk.groups, sk.triples, True)
+        assert code == (sk.groups, sk.triples)
+        assert _reference_canonical(links, sk.groups, sk.triples, False) == kin
+        keys.append((frac, kin, len(sk.groups), code))
+    assert keys == sorted(keys) and len(set(keys)) == len(keys)
+
+
+# --------------------------------------------------------------------- the stored nine-link run
+def test_the_stored_run_says_how_it_was_made():
+    stored = atlas.stored_counts()
+    assert [(c.links, c.dof, c.fractionated) for c in stored.counts] == [(8, 1, False), (9, 1, False)]
+    assert stored.command.startswith("python -m gearlib atlas --links 8 9 ")
+    assert datetime.datetime.fromisoformat(stored.date).tzinfo is not None
+    assert "CPUs" in stored.machine and stored.peak_memory_mb > 0
+    assert all(c.seconds > 0 for c in stored.counts) and stored.seconds == sum(c.seconds for c in stored.counts)
+    nine = {r.level: r for r in stored.rows if r.links == 9}
+    assert {lv: (r.published, r.source) for lv, r in nine.items()} == {
+        "coaxial": (YANG_DING[9][0], "Yang, Ding et al. (2019)"), "kinematic": (YANG_DING[9][1], "Yang, Ding et al. (2019)")}
+
+
+def test_the_stored_eight_link_counts_are_the_literature_and_the_enumeration_now():
+    (eight,) = [c for c in atlas.stored_counts().counts if c.links == 8]
+    now = atlas.chain_counts(8)
+    assert (eight.coaxial, eight.kinematic) == (now.coaxial, now.kinematic) == YANG_DING[8]
+
+
+@pytest.mark.xfail(strict=True, reason="gearlib finds 71,833 displacement and 8652 rotation graphs of nine links where "
+                   "Yang, Ding et al. (2019) publish 71,837 and 8654 (every count up to eight links agrees); the cause "
+                   "is not known. Strict: if the counts ever agree, this fails, and the marker goes.")
+def test_the_stored_nine_link_counts_are_the_published_ones():
+    (nine,) = [c for c in atlas.stored_counts().counts if c.links == 9]
+    assert (nine.coaxial, nine.kinematic) == YANG_DING[9]
+
+
+def test_a_broken_record_is_a_clear_error(tmp_path):
+    missing = tmp_path / "none.json"
+    with pytest.raises(gl.FileFormatError, match="none.json: cannot read"):
+        atlas.stored_counts(missing)
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"counts": [{"links": 9}]}')
+    with pytest.raises(gl.FileFormatError, match="bad.json: not a record of chain counts"):
+        atlas.stored_counts(bad)
+
+
+# --------------------------------------------------------------------- the command line
+def test_atlas_command_prints_the_counts_beside_the_published_ones(tmp_path):
+    out = run("atlas", "--links", "6", "7")
+    assert out.returncode == 0, out.stderr
+    assert "81   published 81 (Yang, Ding et al. (2019)): agrees" in out.stdout
+    assert "published 26 (Tsai (1987)): differs by +1" in out.stdout
+    data = json.loads(run("atlas", "--links", "7", "--dof", "2", "--json").stdout)
+    (seven,) = data["atlas"]
+    assert {lv["level"]: lv["enumerated"] for lv in seven["levels"]} == {"coaxial": 50, "kinematic": 20}
+    assert all(p["agrees"] for lv in seven["levels"] for p in lv["published"])
+    path = tmp_path / "counts.json"
+    assert run("atlas", "--links", "6", "--save", str(path)).returncode == 0
+    stored = atlas.stored_counts(path)
+    assert [(c.links, c.coaxial, c.kinematic) for c in stored.counts] == [(6, *YANG_DING[6])]
+    assert stored.command == f"python -m gearlib atlas --links 6 --dof 1 --save {path}"
+
+
+@pytest.mark.parametrize(("args", "words"), [(("--links", "10"), "--links must be from 2 to 9, got 10"),
+                                             (("--links", "6", "--dof", "0"), "--dof must be at least 1"),
+                                             (("--links", "6", "--workers", "0"), "--workers must be from 1 to 64")])
+def test_atlas_command_errors_are_one_line(args, words):
+    out = run("atlas", *args)
+    assert out.returncode == 2 and out.stderr.strip().count("\n") == 0 and words in out.stderr
+
+
+def _counting_rule(n, triples):
+    """Every link in a gear pair, and no set of k >= 2 links holding k - 1 or more of the gear
+    pairs (Grübler's count on every sub-chain: none rigid, none with a pair too many)."""
+    if {v for t in triples for v in t} != set(range(n)):
+        return False
+    masks = [sum(1 << v for v in t) for t in triples]
+    return not any(sum(1 for m in masks if m & sub == m) >= sub.bit_count() - 1
+                   for sub in range(1 << n) if sub.bit_count() >= 2)
+
+
+@pytest.mark.parametrize(("links", "dof"), [(6, 1), (7, 1), (7, 2)])
+def test_generic_ratios_and_the_counting_rule_reject_the_same_choices(links, dof):
+    """Every choice of gear pairs on every hypertree: degenerate for random ratios (numpy)
+    exactly when some sub-chain has too many gear pairs."""
+    picks = links - 1 - dof
+    for groups in _trees.shapes(links):
+        for triples in itertools.combinations(_chains._candidates(links, groups), picks):
+            assert _valid(links, triples) == _counting_rule(links, triples), (groups, triples)
+
+
+def _leaves(sk, with_groups):
+    """How many leaves the canonical search visits on a skeleton (its symmetry, roughly)."""
+    from gearlib.synthesis import _canon
+    from unittest import mock
+
+    seen = []
+    real = _canon.code_of
+    with mock.patch.object(_canon, "code_of", lambda *a: seen.append(1) or real(*a)):
+        _canon.canonical(sk.n, sk.groups, sk.triples, with_groups=with_groups)
+    return len(seen)
+
+
+@pytest.mark.parametrize("with_groups", [True, False])
+def test_canonical_codes_of_the_most_symmetric_chains_do_not_depend_on_the_numbering(with_groups):
+    """The chains whose search tree branches most (many symmetric planets or gears): renumbered
+    at random, each keeps its code; and chains of different codes are not isomorphic (VF2)."""
+    sks = [_chains.Skeleton(n, tuple(sorted(g)), t) for n, axes in ((8, 6), (9, 8)) for g in _trees.shapes(n)
+           if len(g) >= axes for t in _chains._tree_chains(n, g, n - 2)]  # many axes: many symmetric branches
+    deep = [sk for sk in sks if _leaves(sk, with_groups) >= 6]
+    assert len(deep) >= 20
+    rnd = random.Random(3)
+    codes = []
+    for sk in deep:
+        code = _chains.canonical(sk.n, sk.groups, sk.triples, with_groups=with_groups)[0]
+        codes.append(code)
+        for _ in range(4):
+            p = list(range(sk.n))
+            rnd.shuffle(p)
+            triples = [(p[b], p[a], p[c]) if rnd.random() < 0.5 else (p[a], p[b], p[c]) for a, b, c in sk.triples]
+            rnd.shuffle(triples)
+            groups = [tuple(p[v] for v in g) for g in sk.groups]
+            rnd.shuffle(groups)
+            assert _chains.canonical(sk.n, groups, triples, with_groups=with_groups)[0] == code
+    labels = _vf2_classes([_skeleton_graph(sk.groups, sk.triples, with_groups) for sk in deep])
+    assert len({(c, lab) for c, lab in zip(codes, labels)}) == len(set(codes)) == len(set(labels))

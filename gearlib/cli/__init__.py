@@ -2,8 +2,8 @@
 
 The commands live beside the methods they run, one module per subpackage of gearlib
 (:mod:`.mechanism`: ``speeds``, ``ratio``, ``dof``; :mod:`.units`; :mod:`.gains`;
-:mod:`.adjacency`: ``frequencies``; :mod:`.davies`: ``efficiency``; :mod:`.synthesis`: ``dgm``;
-and :mod:`.catalog`), each listing its ``COMMANDS``; a chapter adds a command to its
+:mod:`.adjacency`: ``frequencies``; :mod:`.davies`: ``efficiency``; :mod:`.synthesis`: ``dgm``
+and ``atlas``; and :mod:`.catalog`), each listing its ``COMMANDS``; a chapter adds a command to its
 module's list. FILE is a YAML or JSON mechanism file, or the name of a catalogue entry
 (``python -m gearlib catalog`` lists them). Errors in the input print one line and exit
 with status 2; ``--json`` prints machine-readable output.

@@ -5,7 +5,9 @@ three terminals that makes a non-fractionated differential geared mechanism (DGM
 constraint among the terminals' speeds and no redundant link. This package holds
 
 * ``atlas`` - the atlas of one- and two-degree-of-freedom GKCs, enumerated from the
-  structural rules, with the published counts (engine: ``_chains``);
+  structural rules (engine: ``_chains``, ``_trees``, ``_canon``);
+* ``counts`` - how many chains there are, up to nine links, beside the published counts,
+  and the stored nine-link run;
 * ``dgm`` - circuit matrices, the terminal constraint, the identification of every
   assignment, synthesis over the atlas, the proportional relation;
 * ``drawing`` and ``widget`` - a DGM drawn with its constraint, the identification
@@ -19,8 +21,9 @@ from .._common.exports import lazy
 EXPORTS = {
     "dgm": ("adjacency", "circuit_matrix", "terminal_constraint", "TerminalConstraint", "identify", "Identification",
             "synthesize", "proportional"),
-    "atlas": ("geared_chains", "canonical_graph", "isomorphic", "is_fractionated", "chain_problems",
-              "PublishedCount", "PUBLISHED_COUNTS", "CountRow", "count_table", "MAX_LINKS"),
+    "atlas": ("geared_chains", "canonical_graph", "isomorphic", "is_fractionated", "chain_problems", "MAX_LINKS"),
+    "counts": ("chain_counts", "ChainCounts", "MAX_COUNT_LINKS", "PublishedCount", "PUBLISHED_COUNTS", "CountRow",
+               "count_table", "StoredCounts", "stored_counts"),
     "drawing": ("plot_dgm", "plot_identification", "equation_text"),
     "widget": ("DGMExplorer", "dgm_explorer"),
 }

@@ -3,13 +3,17 @@
 A chain skeleton has links ``0 .. n-1``, *coaxial groups* (sets of at least two links that
 turning pairs with one axis label join) and *triples* ``(a, b, c)``: a gear pair between
 gears ``a < b`` on the carrier ``c``. The turning pairs form a tree, so the bipartite graph
-"link belongs to group" is a tree too (a *hypertree*); the tree of bearings inside a group
-does not change the kinematics and is not part of a skeleton.
+"link belongs to group" is a tree too (a *hypertree*, see ``_trees``); the tree of
+bearings inside a group does not change the kinematics and is not part of a skeleton.
 
-Enumeration (:func:`skeletons`): every non-isomorphic bipartite tree with ``n`` link nodes
-and group nodes of degree >= 2 (networkx's tree generator), every choice of
-``n - 1 - dof`` gear pairs among the pairs of links that share a carrier on two different
-axes, one choice per orbit of the tree's automorphisms, then the structural filters.
+Enumeration (:func:`skeletons`), for each hypertree: the candidate gear pairs are the pairs of
+links that share a carrier on two different axes (links two groups apart in the tree); a
+depth-first search picks ``n - 1 - dof`` of them in increasing order and abandons a partial
+choice as soon as no completion can pass: a gear pair that repeats the others (generic rank
+short) or links locked together stay so when pairs are added, a link that no later candidate
+reaches stays idle, and a choice that an automorphism of the tree maps onto a
+lexicographically smaller one has only completions that are not the smallest of their orbit.
+So each chain is reached once, as the smallest choice of its orbit, without a canonical form.
 Generic (random) gear ratios in the field of integers modulo the prime ``2**61 - 1`` stand
 for symbolic ones in the rank tests; a false answer would need a random ratio to hit a
 root of a non-zero polynomial, with probability below ``1e-15``.
@@ -19,8 +23,12 @@ from __future__ import annotations
 
 import functools
 import itertools
+import operator
 import random
 from dataclasses import dataclass
+
+from ._canon import automorphisms, canonical
+from ._trees import shapes
 
 PRIME = (1 << 61) - 1
 
@@ -100,180 +108,133 @@ def fractionated(n: int, triples, groups=()) -> bool:
     After splitting link ``x``, two links stay joined when they share a gear pair's
     fundamental circuit (gears and carrier) or a coaxial group that does not contain ``x``
     (a group through ``x`` can always be borne on ``x``, so it splits with it).
+
+    >>> fractionated(5, [(1, 2, 0), (3, 4, 0)], [(0, 1), (0, 2), (0, 3), (0, 4)])  # two pairs on one carrier
+    True
     """
+    every = (1 << n) - 1
+    circuits = [sum(1 << v for v in t) for t in triples]
+    axes = [sum(1 << v for v in g) for g in groups]
     for x in range(n):
-        parent = {i: i for i in range(n) if i != x}
-        sets = [[v for v in t if v != x] for t in triples]
-        sets += [list(g) for g in groups if x not in g]
-        for s in sets:
-            for v in s[1:]:
-                parent[_find(parent, v)] = _find(parent, s[0])
-        if len({_find(parent, i) for i in parent}) > 1:
+        bit = 1 << x
+        rest = every & ~bit
+        sets = [m & ~bit for m in circuits] + [m for m in axes if not m & bit]
+        reach = rest & -rest  # the lowest link but x; grow what joins it
+        grown = True
+        while grown:
+            grown = False
+            for m in sets:
+                if m & reach and m & ~reach:
+                    reach |= m
+                    grown = True
+        if reach != rest:
             return True
     return False
-
-
-def _find(parent: dict, i):
-    while parent[i] != i:
-        parent[i] = parent[parent[i]]
-        i = parent[i]
-    return i
-
-
 # ---------------------------------------------------------------- enumeration
+__all__ = ["Skeleton", "generic_motion", "locked_sets", "degenerate", "fractionated", "skeletons",
+           "automorphisms", "canonical"]
+
+
 @functools.cache
 def _hypertrees(n: int) -> tuple:
-    """``(groups, automorphisms)`` for every non-isomorphic hypertree on *n* links (cached:
-    chains of every dof with *n* links start from the same trees)."""
-    import networkx as nx
-
-    out = []
-    for k in range(1, n):
-        for tree in nx.nonisomorphic_trees(n + k):
-            colour = nx.bipartite.color(tree)
-            for side in (0, 1):
-                links = sorted(v for v in tree if colour[v] == side)
-                group_nodes = [v for v in tree if colour[v] != side]
-                if len(links) != n or any(tree.degree(g) < 2 for g in group_nodes):
-                    continue
-                idx = {v: i for i, v in enumerate(links)}
-                groups = tuple(frozenset(idx[v] for v in tree[g]) for g in group_nodes)
-                out.append((groups, automorphisms(n, groups)))
-    return tuple(out)
-
-
-def automorphisms(n: int, groups) -> tuple:
-    """Every permutation ``p`` of the links (``p[i]``: the image of link ``i``) that maps the
-    coaxial groups onto themselves: the automorphisms of the hypertree, which its groups'
-    member sets determine (two groups of a tree share at most one link).
-
-    Backtracking over the links in order, each tried only on the links of its colour after
-    colour refinement, and a group checked as soon as its last member has an image.
-
-    >>> automorphisms(3, [frozenset({0, 1}), frozenset({1, 2})])
-    ((0, 1, 2), (2, 1, 0))
-    """
-    adj, kind = _structure(n, groups, (), True)
-    colour = _refine(adj, dict(kind))
-    same = [[w for w in range(n) if colour[w] == colour[v]] for v in range(n)]
-    group_set = set(groups)
-    closing = [[g for g in groups if max(g) == v] for v in range(n)]
-    image, used, out = [0] * n, [False] * n, []
-
-    def extend(v):
-        if v == n:
-            out.append(tuple(image))
-            return
-        for w in same[v]:
-            if used[w]:
-                continue
-            image[v] = w
-            if all(frozenset(image[u] for u in g) in group_set for g in closing[v]):
-                used[w] = True
-                extend(v + 1)
-                used[w] = False
-
-    extend(0)
-    return tuple(out)
+    """``(groups, automorphisms)`` for every non-isomorphic hypertree on *n* links, groups as
+    frozensets (cached). :func:`skeletons` computes automorphisms only for the trees that
+    have enough candidate gear pairs."""
+    return tuple((tuple(frozenset(g) for g in groups), automorphisms(n, groups)) for groups in shapes(n))
 
 
 def _candidates(n: int, groups) -> list[tuple]:
+    """Every gear pair ``(a, b, c)`` the tree allows: ``a`` and ``c`` in one group, ``b`` and
+    ``c`` in another (links two groups apart, ``c`` between them), sorted."""
     member = {i: [g for g in groups if i in g] for i in range(n)}
     out = []
     for c in range(n):
         for g1, g2 in itertools.combinations(member[c], 2):
-            for a in g1 - {c}:
-                for b in g2 - {c}:
+            for a in set(g1) - {c}:
+                for b in set(g2) - {c}:
                     out.append((min(a, b), max(a, b), c))
     return sorted(out)
 
 
-def skeletons(n: int, dof: int) -> list[Skeleton]:
-    """Every non-isomorphic, non-degenerate chain with *n* links and *dof* freedoms
-    (fractionated ones included), in no particular order."""
-    jg = n - 1 - dof
-    out = []
-    for groups, autos in _hypertrees(n):
-        cands = _candidates(n, groups)
-        index = {t: i for i, t in enumerate(cands)}
-        for combo in itertools.combinations(range(len(cands)), jg):
-            triples = [cands[i] for i in combo]
-            if len({v for t in triples for v in t}) < n:  # a link that is neither gear nor carrier
-                continue
-            if any(
-                tuple(sorted(index[(min(p[a], p[b]), max(p[a], p[b]), p[c])] for a, b, c in triples)) < combo
-                for p in autos
-            ):  # not the smallest of its orbit under the automorphisms
-                continue
-            if degenerate(n, triples):
-                continue
-            out.append(Skeleton(n, tuple(sorted(tuple(sorted(g)) for g in groups)), tuple(triples)))
+@functools.cache
+def _ratios(n: int) -> dict:
+    """A generic gear ratio (a random integer modulo :data:`PRIME`) for every triple of links."""
+    rnd = random.Random(2003)
+    return {t: rnd.randrange(2, PRIME - 1) for t in itertools.product(range(n), repeat=3)}
+
+
+def _tree_chains(n: int, groups, picks: int) -> list[tuple]:
+    """The chains on one hypertree: each a tuple of *picks* triples, the smallest of its orbit
+    under the tree's automorphisms (see the module's docstring)."""
+    cands = _candidates(n, groups)
+    m = len(cands)
+    if m < picks:
+        return []
+    index = {t: i for i, t in enumerate(cands)}
+    weight = [1 << (m - 1 - i) for i in range(m)]  # a set's lexicographic rank, reversed: smaller is larger
+    moves = [p for p in automorphisms(n, groups) if any(p[i] != i for i in range(n))]
+    # moved[i][k]: weight of the image of candidate i under automorphism k
+    image = [[index[(min(p[a], p[b]), max(p[a], p[b]), p[c])] for p in moves] for a, b, c in cands]
+    moved = [[weight[j] for j in row] for row in image]
+    ratios = _ratios(n)
+    gears = [(a, b, c, ratios[(a, b, c)]) for a, b, c in cands]
+    reach = [(1 << a) | (1 << b) | (1 << c) for a, b, c in cands]
+    later = [0] * (m + 1)  # links that candidates i.. reach
+    for i in range(m - 1, -1, -1):
+        later[i] = later[i + 1] | reach[i]
+    every = (1 << n) - 1
+    out, chosen = [], []
+    add = operator.add
+
+    def search(start, basis, covered, rank, images):
+        depth = len(chosen)
+        for i in range(start, m - (picks - depth) + 1):
+            cov = covered | reach[i]
+            idle = every & ~cov
+            if idle & ~later[i + 1] or idle.bit_count() > 3 * (picks - depth - 1):
+                continue  # some link can no longer be reached
+            a, b, c, e = gears[i]
+            f = e - 1
+            dots = [(u[b] - e * u[a] + f * u[c]) % PRIME for u in basis]
+            j = next((j for j, d in enumerate(dots) if d), None)
+            if j is None:
+                continue  # the Willis row of this pair repeats the others
+            pivot, dj = basis[j], dots[j]
+            new = [u if not d else [(dj * x - d * y) % PRIME for x, y in zip(u, pivot)]
+                   for k, (u, d) in enumerate(zip(basis, dots)) if k != j]
+            if len(set(zip(*new))) < n:
+                continue  # two links turn together for generic ratios: locked
+            r2 = rank + weight[i]
+            if moves:
+                imgs = list(map(add, images, moved[i]))
+                if max(imgs) > r2:
+                    continue  # an automorphism maps the choice onto a smaller one
+            else:
+                imgs = images
+            chosen.append(i)
+            if depth + 1 == picks:
+                out.append(tuple(cands[k] for k in chosen))
+            else:
+                search(i + 1, new, cov, r2, imgs)
+            chosen.pop()
+
+    identity = [[int(i == j) for i in range(n)] for j in range(n)]
+    search(0, identity, 0, 0, [0] * len(moves))
     return out
 
 
-# ---------------------------------------------------------------- canonical labelling
-def _structure(n: int, groups, triples, with_groups: bool):
-    """Adjacency ``{node: [(edge kind, node), ...]}`` and node kinds of the structure graph."""
-    adj = {i: [] for i in range(n)}
-    kind = dict.fromkeys(range(n), 0)
-    node = n
-    if with_groups:
-        for g in groups:
-            adj[node] = [("axis", v) for v in g]
-            kind[node] = 1
-            for v in g:
-                adj[v].append(("axis", node))
-            node += 1
-    for a, b, c in triples:
-        adj[node] = [("mesh", a), ("mesh", b), ("carrier", c)]
-        kind[node] = 2
-        adj[a].append(("mesh", node))
-        adj[b].append(("mesh", node))
-        adj[c].append(("carrier", node))
-        node += 1
-    return adj, kind
+def skeletons(n: int, dof: int) -> list[Skeleton]:
+    """Every non-isomorphic, non-degenerate chain with *n* links and *dof* freedoms
+    (fractionated ones included), hypertree by hypertree in a fixed order.
 
-
-def _refine(adj, colour: dict) -> dict:
-    count = len(set(colour.values()))
-    while True:
-        sig = {v: (colour[v], tuple(sorted((k, colour[u]) for k, u in adj[v]))) for v in adj}
-        order = {s: i for i, s in enumerate(sorted(set(sig.values())))}
-        colour = {v: order[sig[v]] for v in adj}
-        if len(order) == count:
-            return colour
-        count = len(order)
-
-
-def _code(perm, groups, triples, with_groups):
-    g = tuple(sorted(tuple(sorted(perm[v] for v in grp)) for grp in groups)) if with_groups else ()
-    t = tuple(sorted((min(perm[a], perm[b]), max(perm[a], perm[b]), perm[c]) for a, b, c in triples))
-    return (g, t)
-
-
-def canonical(n: int, groups, triples, *, with_groups: bool = True):
-    """``(code, perm)``: the smallest code over an individualise-and-refine search, and the
-    relabelling ``perm[old] = new`` that gives it. Isomorphic chains get equal codes."""
-    adj, kind = _structure(n, groups, triples, with_groups)
-    best = [None, None]
-
-    def search(colour):
-        colour = _refine(adj, colour)
-        cells = {}
-        for v in range(n):
-            cells.setdefault(colour[v], []).append(v)
-        open_cells = [c for c in sorted(cells) if len(cells[c]) > 1]
-        if not open_cells:
-            ranked = sorted(range(n), key=colour.__getitem__)
-            perm = {v: i for i, v in enumerate(ranked)}
-            code = _code(perm, groups, triples, with_groups)
-            if best[0] is None or code < best[0]:
-                best[0], best[1] = code, perm
-            return
-        cell = cells[open_cells[0]]
-        for v in cell:
-            branch = {u: 2 * c + (0 if u == v else 1) for u, c in colour.items()}
-            search(branch)
-
-    search(dict(kind))
-    return best[0], best[1]
+    >>> [len(skeletons(k, 1)) for k in range(3, 7)]
+    [1, 3, 13, 81]
+    """
+    picks = n - 1 - dof
+    if picks < 1:
+        return []
+    out = []
+    for groups in shapes(n):
+        sorted_groups = tuple(sorted(groups))
+        out += [Skeleton(n, sorted_groups, triples) for triples in _tree_chains(n, groups, picks)]
+    return out

@@ -38,18 +38,22 @@ from __future__ import annotations
 
 import functools
 import numbers
-from dataclasses import dataclass
 
 import sympy
 
 from . import _chains
+from .counts import (MAX_COUNT_LINKS, PUBLISHED_COUNTS, ChainCounts, CountRow, PublishedCount, StoredCounts,
+                     chain_counts, count_table, stored_counts)
 from .._common.topology import CoaxialGroups
 from ..errors import DataFormatError
 from ..mechanism.data import Mechanism
 
 __all__ = [
     "geared_chains", "canonical_graph", "isomorphic", "is_fractionated", "chain_problems",
-    "PublishedCount", "PUBLISHED_COUNTS", "CountRow", "count_table", "MAX_LINKS",
+    "MAX_LINKS",
+    # counted (up to nine links) and published: defined in counts, offered here too as gl.atlas.<name>
+    "chain_counts", "ChainCounts", "MAX_COUNT_LINKS", "PublishedCount", "PUBLISHED_COUNTS", "CountRow",
+    "count_table", "StoredCounts", "stored_counts",
 ]
 
 MAX_LINKS = 8
@@ -64,7 +68,8 @@ def _check_args(n_links, dof, fractionated, level):
             raise DataFormatError(f"{name} must be an integer of at least {low}, got {value!r}")
     if n_links > MAX_LINKS:
         raise DataFormatError(
-            f"n_links={n_links} is too many for this enumeration (at most {MAX_LINKS}; 8 links take about a minute)"
+            f"n_links={n_links} is too many to build as mechanisms (at most {MAX_LINKS}); "
+            f"gl.synthesis.chain_counts counts the chains of up to {MAX_COUNT_LINKS} links"
         )
     if fractionated not in _FRACTIONATED or isinstance(fractionated, int) and not isinstance(fractionated, bool):
         raise DataFormatError(f"fractionated must be False, True or 'only', got {fractionated!r}")
@@ -299,73 +304,3 @@ def isomorphic(first, second, *, level: str = "coaxial") -> bool:
         node_match=lambda x, y: x.get("kind") == y.get("kind") and x.get("role") == y.get("role"),
         edge_match=lambda x, y: x.get("kind") == y.get("kind"),
     )
-
-
-# ---------------------------------------------------------------- published counts
-@dataclass(frozen=True)
-class PublishedCount:
-    """A count of geared kinematic chains printed in the literature."""
-
-    links: int
-    dof: int
-    level: str
-    count: int | None
-    source: str
-    note: str = ""
-
-
-PUBLISHED_COUNTS = (
-    PublishedCount(4, 1, "kinematic", 2, "Buchsbaum and Freudenstein (1970)",
-                   "as quoted in later surveys; the 1970 paper itself was not consulted"),
-    PublishedCount(5, 1, "kinematic", 6, "Buchsbaum and Freudenstein (1970)",
-                   "as quoted in later surveys; the 1970 paper itself was not consulted"),
-    PublishedCount(6, 1, "kinematic", 26, "Tsai (1987)",
-                   "one graph short: Yang, Ding et al. (2019) settle the six-link count at 27"),
-    PublishedCount(6, 1, "kinematic", 27, "Yang, Ding et al. (2019)"),
-    PublishedCount(6, 1, "coaxial", 81, "Yang, Ding et al. (2019)"),
-    PublishedCount(7, 1, "kinematic", 152, "Yang, Ding et al. (2019)"),
-    PublishedCount(7, 1, "coaxial", 647, "Yang, Ding et al. (2019)"),
-    PublishedCount(8, 1, "kinematic", 1070, "Yang, Ding et al. (2019)"),
-    PublishedCount(8, 1, "coaxial", 6360, "Yang, Ding et al. (2019)"),
-    PublishedCount(5, 2, "kinematic", 0, "Tsai and Lin (1989)", "no non-fractionated two-dof train has five or fewer links"),
-    PublishedCount(6, 2, "kinematic", 2, "Tsai and Lin (1989)"),
-    PublishedCount(7, 2, "kinematic", 20, "Tsai and Lin (1989)"),
-    PublishedCount(7, 2, "coaxial", 50, "Tsai and Lin (1989)", "the '50 two-DOF seven-link GKCs' of Chen, Yao and Lee"),
-    PublishedCount(8, 2, "coaxial", None, "Hsu (1994)",
-                   "a project report in Chinese that Chen, Yao and Lee take their 8-link GKC from; not available here"),
-)
-
-
-@dataclass(frozen=True)
-class CountRow:
-    """One published count next to the enumeration (non-fractionated chains)."""
-
-    links: int
-    dof: int
-    level: str
-    enumerated: int
-    published: int | None
-    source: str
-    note: str
-
-    @property
-    def agrees(self) -> bool | None:
-        return None if self.published is None else self.enumerated == self.published
-
-
-def count_table(max_links: int = 7) -> tuple[CountRow, ...]:
-    """The enumeration's counts of non-fractionated chains beside ``PUBLISHED_COUNTS``,
-    for chains of at most *max_links* links (8 links take about a minute).
-
-    >>> [(r.links, r.enumerated, r.published) for r in gl.atlas.count_table(5) if r.dof == 1]
-    [(4, 2, 2), (5, 6, 6)]
-    """
-    if isinstance(max_links, bool) or not isinstance(max_links, numbers.Integral) or not 2 <= max_links <= MAX_LINKS:
-        raise DataFormatError(f"max_links must be an integer from 2 to {MAX_LINKS}, got {max_links!r}")
-    rows = []
-    for pub in PUBLISHED_COUNTS:
-        if pub.links > max_links:
-            continue
-        found = len(_kept(pub.links, pub.dof, False, pub.level))  # counted, not built as Mechanisms
-        rows.append(CountRow(pub.links, pub.dof, pub.level, found, pub.count, pub.source, pub.note))
-    return tuple(rows)
