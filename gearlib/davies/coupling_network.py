@@ -256,8 +256,10 @@ def network(mech: Mechanism, ground=None, input=None, output=None, *, held=(), j
         if h in (ground, input, output):
             raise ConstraintError(f"held link {h} is the ground or a port; hold another link")
         brakes.append(port("held", h, locked=True))
+    joined_pairs = []
     for pair in joined or ():
         u, v = (mech.resolve(x, "joined link") for x in pair)
+        joined_pairs.append((u, v))
         ax = lay.common_axis(u, v)
         if ax is None:
             raise ConstraintError(f"joined links {u} and {v} are not coaxial; a clutch joins two links on one axis")
@@ -293,6 +295,6 @@ def network(mech: Mechanism, ground=None, input=None, output=None, *, held=(), j
                           tuple(chords) if chords else None)
     graph.chords  # noqa: B018  (choose the spanning tree now, so a bad choice of chords fails here)
     return Network(mech, ground, input, output, lay, couplings, graph, coords, acoords, tuple(mvars), tuple(avars),
-                   exact, tuple(notes), {"held": held, "bearings": bearing_set, "viscous": viscous_set})
+                   exact, tuple(notes), {"held": held, "joined": tuple(joined_pairs), "bearings": bearing_set, "viscous": viscous_set})
 
 

@@ -174,7 +174,8 @@ def check_willis(mo: Motions, tol: float = 1e-9) -> None:
         scale = 1 / sympy.sympify(mo.speed)
     else:
         scale = 1
-    sol = speeds(mech, net.ground, {net.input: speed}, method="numeric", held=net.options.get("held") or ())
+    sol = speeds(mech, net.ground, {net.input: speed}, method="numeric", held=net.options.get("held") or (),
+                 joined=net.options.get("joined") or ())
     for c in net.couplings:
         if c.kind == "mesh" or c.locked:
             continue

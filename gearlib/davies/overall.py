@@ -355,6 +355,12 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
         drv, dvn = (c.tail, c.head) if tail[c.name] else (c.head, c.tail)
         if exact:
             zsyms[c.name] = sympy.Symbol(f"zeta_{c.name}")
+        if not rolls(mo, c):
+            # no motion relative to the carrier: the mesh transmits torque like a locked joint and
+            # dissipates nothing, whatever its ordinary efficiency (a direct drive)
+            zetas[c.name] = sympy.Integer(0) if exact else 0.0
+            used[c.name] = _lookup(eta, gp.gears, c.name, drv, dvn, None if symbolic is True else GLOVER[gp.kind])
+            continue
         if c.name in zeta_given:
             z = zeta_given[c.name]
             zetas[c.name] = z / _scale(net, c.name) if exact else z
@@ -380,6 +386,19 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
         zetas[c.name] = sympy.cancel(z) if len(getattr(z, "free_symbols", ())) > 1 else z
         used[c.name] = value
     return zetas, used, zsyms
+
+
+def rolls(mo, coupling) -> bool:
+    """Whether the gears of a mesh turn relative to its carrier (a mesh that does not roll
+    passes torque without loss)."""
+    values = mo.network.layout.values
+    for x in mo.link(coupling.tail, coupling.carrier):
+        try:
+            if abs(_num(x, values)) > 1e-12:
+                return True
+        except TypeError:  # a symbolic motion: assume it rolls
+            return True
+    return False
 
 
 def _zeta_spec(net, zeta):
