@@ -44,7 +44,7 @@ def _frequencies_run(args) -> int:
         from ..adjacency.frequencies import with_bearings
 
         mech = with_bearings(mech, args.bearings)
-    sol = speeds(mech, args.ground, parse_link_values(args.input), method=args.method, **constraints(args))
+    sol = speeds(mech, args.ground, parse_link_values(args.input), method=args.method, **constraints(args, mech))
     table = frequency_table(mech, sol, convention=args.convention, unit=args.unit)
     return show(args, table)
 

@@ -147,9 +147,26 @@ class ShiftTable:
                 f"<th>ratio (null space)</th><th>agree</th></tr>{body}</table>")
 
 
-def shift_table(mech: Mechanism, modes) -> ShiftTable:
-    """Each operating mode's ratio ``theta_out / theta_in`` by unit-by-unit propagation, with the
-    null-space solution beside it (see the module documentation)."""
+def shift_table(mech: Mechanism, modes=None, **options):
+    """The shift table of a transmission.
+
+    Without *modes*: the gears of the mechanism's own ``schedule`` (its brakes, clutches and
+    gears as data), with ratios, steps and spread, link and slip speeds, efficiencies and power
+    flow, and every combination of elements classified: a
+    :class:`~gearlib.gains.ScheduleTable` (options ``eta``, ``k``, ``efficiency``, ``ground``,
+    ``input``, ``output``: see :func:`gearlib.gains.schedule_table`).
+
+    With *modes* (each a ground, input, output and optional held and joined links, as Liu,
+    Chen and Chang give their gears): each mode's ratio ``theta_out / theta_in`` by unit-by-unit
+    propagation, with the null-space solution beside it (see the module documentation), a
+    :class:`~gearlib.gains.ShiftTable`.
+    """
+    if modes is None:
+        from .schedule import schedule_table
+
+        return schedule_table(mech, **options)
+    if options:
+        raise DataFormatError(f"shift_table with operating modes takes no options; got {', '.join(options)}")
     rows = []
     for m in operating_modes(modes):
         prop = propagate(mech, m.output, [m.input], ground=m.ground, held=m.held, joined=m.joined)
