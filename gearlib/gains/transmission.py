@@ -177,7 +177,10 @@ def shift_table(mech: Mechanism, modes=None, **options):
 def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, title=None):
     """Every mode's ratio as the tooth number of one gear varies: the static twin of
     :func:`gearlib.gains.transmission_explorer`. ``pair`` names a gear pair, ``gear``
-    the gear of that pair whose tooth number takes each of ``values``."""
+    the gear of that pair whose tooth number takes each of ``values``. Tooth numbers with
+    which a planetary set cannot be assembled (:func:`gearlib.assembly_conditions`) are drawn
+    as open markers."""
+    from ..mechanism.assembly import assembly_conditions
     from ..mechanism.plot import _axes
 
     ax = _axes(ax, figsize=(6.0, 3.4))
@@ -186,13 +189,23 @@ def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, titl
     values = list(values)
     modes = operating_modes(modes)
     curves = {m.name: [] for m in modes}
+    fits = []
     for n in values:
         teeth = (n, gp.teeth[1]) if gear == gp.gears[0] else (gp.teeth[0], n)
-        table = shift_table(mech.with_gear_pair(gp.gears, teeth=teeth), modes)
+        variant = mech.with_gear_pair(gp.gears, teeth=teeth)
+        fits.append(all(c.ok for c in assembly_conditions(variant)))
+        table = shift_table(variant, modes)
         for row in table.rows:
             curves[row.mode.name].append(float(row.ratio))
     for name, ys in curves.items():
-        ax.plot(values, ys, marker="o", markersize=3, label=name)
+        line, = ax.plot(values, ys, marker="o", markersize=3, label=name)
+        bad = [(x, y) for x, y, ok in zip(values, ys, fits) if not ok]
+        if bad:
+            ax.plot(*zip(*bad), linestyle="none", marker="o", markersize=5, markerfacecolor="white",
+                    markeredgecolor=line.get_color())
+    if not all(fits):
+        ax.plot([], [], linestyle="none", marker="o", markersize=5, markerfacecolor="white", markeredgecolor="0.3",
+                label="does not assemble")
     ax.axvline(gp.teeth[gp.gears.index(gear)], color="0.6", linestyle=":", linewidth=1)
     ax.axhline(0, color="black", linewidth=0.8)
     ax.set_xlabel(f"teeth of gear {gear} in pair {gp.label}")
