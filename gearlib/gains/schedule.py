@@ -327,6 +327,12 @@ class ScheduleTable:
 
         return to_html(self)
 
+    def plot(self, ax=None, **kwargs):
+        """The slip of every open element in every gear (:func:`gearlib.gains.plot_shift_table`)."""
+        from .drawing import plot_shift_table
+
+        return plot_shift_table(self, ax=ax, **kwargs)
+
 
 def schedule_table(mech: Mechanism, *, eta=None, k=None, efficiency: bool = True, ground=None, input=None,
                    output=None) -> ScheduleTable:
