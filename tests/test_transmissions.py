@@ -202,7 +202,7 @@ def _set_power_balance(gear):
 
     lossless = solve({"eta": 1.0, **{k: "sun" for k in range(n_sets)}})
     drives = {"eta": ETA_EXT * ETA_INT}
-    for k, (s, r, c, zs, zr) in enumerate(SETS_8HP):
+    for k, (s, _r, c, _zs, _zr) in enumerate(SETS_8HP):
         drives[k] = "sun" if lossless[3 * k] * (w[s] - w[c]) > 0 else "ring"
     x = solve(drives)
     return -x[-1] * w[8] / (1.0 * w[1])
@@ -293,7 +293,7 @@ def _torque_balance(free, pairs, ports, speeds, torque_given, eta):
     base = [-rel(a, c) / rel(b, c) for a, b, c in pairs]
     x0 = solve(base)
     ks = []
-    for i, (a, b, c) in enumerate(pairs):
+    for i, (a, _b, c) in enumerate(pairs):
         a_drives = x0[i] * rel(a, c) < 0  # the mesh's force on gear a takes power from it (carrier frame)
         ks.append(base[i] * (eta if a_drives else 1 / eta))
     x = solve(ks)

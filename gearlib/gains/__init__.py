@@ -34,7 +34,7 @@ EXPORTS = {
                "UNIT_TYPES", "unit_gains"),
     # gearlib.gains.scaling is the module; its function is gearlib.gains.scaling.scaling
     "scaling": ("ScalingCurve", "dense_nullspace_ratio", "plot_scaling"),
-    "drawing": ("draw_propagation", "plot_shift_table", "plot_gear_efficiency"),
+    "drawing": ("draw_propagation", "plot_shift_table", "plot_gear_efficiency", "plot_gear_power"),
     "widget": ("TransmissionExplorer", "transmission_explorer"),
 }
 

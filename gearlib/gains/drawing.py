@@ -3,14 +3,15 @@ transmission's shift table.
 
 :func:`draw_propagation` draws a :class:`~gearlib.Propagation` or a
 :class:`~gearlib.gains.Plan` (whose ``.plot()`` comes here); :func:`plot_shift_table` and
-:func:`plot_gear_efficiency` draw a :class:`~gearlib.gains.ScheduleTable` (its ``.plot()``).
+:func:`plot_gear_efficiency` draw a :class:`~gearlib.gains.ScheduleTable` (its ``.plot()``),
+:func:`plot_gear_power` the power flow of one of its gears.
 Each takes ``ax=``, draws and returns it.
 """
 
 from __future__ import annotations
 from ..units._draw import _axes, _finish
 
-__all__ = ['draw_propagation', 'plot_shift_table', 'plot_gear_efficiency']
+__all__ = ['draw_propagation', 'plot_shift_table', 'plot_gear_efficiency', 'plot_gear_power']
 
 
 def draw_propagation(prop, ax=None, *, title=None, font_size=9):
@@ -126,4 +127,26 @@ def plot_gear_efficiency(table, ax=None, *, title=None, font_size=8, bottom=None
     ax.axhline(1.0, color="black", linewidth=0.6)
     ax.set_title(title if title is not None else f"{table.mechanism.name}: efficiency of every gear",
                  fontsize=font_size + 1)
+    return ax
+
+
+def plot_gear_power(gear, ax=None, *, title=None, font_size=8):
+    """The power flow of one gear of a shift table (a :class:`~gearlib.gains.GearResult`): for
+    every mesh its real power (measured from the frame) and its rolling power (measured from its
+    carrier, what its friction acts on), per unit input power; the dashed line is the input power."""
+    import numpy as np
+
+    meshes = list(gear.meshes)
+    ax = _axes(ax, (6.4, 3.0))
+    x = np.arange(len(meshes))
+    ax.bar(x - 0.2, [abs(m.real) for m in meshes], 0.4, color="tab:blue", label="real (from the frame)")
+    ax.bar(x + 0.2, [m.rolling for m in meshes], 0.4, color="tab:orange", label="rolling (from the carrier)")
+    ax.axhline(1.0, color="black", linestyle="--", linewidth=0.8)
+    labels = [f"{a}-{b}\n(carrier {m.carrier})" for m, (a, b) in ((m, m.gears) for m in meshes)]
+    ax.set_xticks(x, labels, fontsize=font_size)
+    ax.set_ylabel("|power| / input power", fontsize=font_size + 1)
+    ax.legend(fontsize=font_size, frameon=False, loc="upper left")
+    top = max([1.0] + [abs(m.real) for m in meshes] + [m.rolling for m in meshes])
+    ax.set_ylim(0, top * 1.25)
+    ax.set_title(title if title is not None else f"gear {gear.name}: power through every mesh", fontsize=font_size + 1)
     return ax

@@ -253,7 +253,7 @@ def _rate(mech, ground, input, output, held, joined, eta):
         tail, head = power_flow(mo, act, c.name, ground)
         real = max(float(tail), float(head), key=abs) / p_in
         meshes.append(MeshPower(m.gears, m.carrier, m.driver, abs(float(m.virtual_power)),
-                                real, -float(m.loss) / p_in))
+                                real, 0.0 - float(m.loss) / p_in))
     torques = {}
     t_in = float(act.magnitude(next(v.name for v in net.action_vars if v.role == "input")))
     for el in mech.shift_elements:
