@@ -520,3 +520,19 @@ def test_combinations_are_all_the_subsets():
     m = gl.catalog.load("zf_6hp26")
     labels = [c.label for c in gl.gains.classify(m)]
     assert labels == ["+".join(c) for c in itertools.combinations("ABCDE", 2)]
+
+
+def test_davies_layout_takes_pitch_radii_from_the_module():
+    d = yaml.safe_load(gl.catalog.path("simple_planetary").read_text())
+    for gp in d["gear_pairs"]:
+        gp["module"] = 2.5
+    m = gl.Mechanism.from_dict(d)
+    lay = gl.davies.layout(m)
+    for gp, mesh in zip(m.gear_pairs, lay.meshes):
+        assert tuple(float(r) for r in mesh.radii) == tuple(2.5 * z / 2 for z in gp.teeth)  # r = m z / 2
+    for gp in d["gear_pairs"]:
+        del gp["module"]
+        gp["normal_module"], gp["helix_angle"] = 2, "30*deg"
+    helical = gl.davies.layout(gl.Mechanism.from_dict(d))
+    m_t = 2 / math.cos(math.radians(30))
+    assert float(helical.meshes[0].radii[0]) == pytest.approx(m_t * 24 / 2, rel=1e-12)

@@ -107,7 +107,7 @@ def _summary(t) -> list:
 def to_text(t) -> str:
     m = t.mechanism
     lines = [f"shift table of {m.name!r}: input {t.input}, output {t.output}, ground {t.ground}",
-             f"efficiency with {t.eta_text}"]
+             f"efficiency with {t.eta_text}" if t.rated else t.eta_text]
     rows = [("gear", "engaged", "i", "step", "ratio out/in", "efficiency", "circulating", "slip of open elements")]
     for g in t.gears:
         rows.append((g.name, "+".join(g.engaged), _fix(g.i), _fix(g.step, 3), str(g.ratio),

@@ -288,12 +288,15 @@ class ScheduleTable:
     combinations: tuple
     eta: object
     spread: object = None
+    rated: bool = True
 
     @property
     def eta_text(self) -> str:
         """The ordinary efficiencies used, in words (the defaults are stated, never silent)."""
         from ..davies.overall import GLOVER
 
+        if not self.rated:
+            return "no efficiencies (kinematics only)"
         if self.eta is None:
             return (f"Glover's defaults: {GLOVER['external']} per external mesh, {GLOVER['internal']} per internal "
                     "mesh")
@@ -361,7 +364,7 @@ def schedule_table(mech: Mechanism, *, eta=None, k=None, efficiency: bool = True
         i = [g.i for g in forward]
         spread = max(i) / min(i)
     combos = classify(mech, k, ground=ground, input=input, output=output)
-    return ScheduleTable(mech, ground, input, output, tuple(gears), combos, eta, spread)
+    return ScheduleTable(mech, ground, input, output, tuple(gears), combos, eta, spread, efficiency)
 
 
 def _positive(x) -> bool:
