@@ -536,3 +536,17 @@ def test_davies_layout_takes_pitch_radii_from_the_module():
     helical = gl.davies.layout(gl.Mechanism.from_dict(d))
     m_t = 2 / math.cos(math.radians(30))
     assert float(helical.meshes[0].radii[0]) == pytest.approx(m_t * 24 / 2, rel=1e-12)
+
+
+def test_the_command_line_reports_an_impossible_set_in_one_line_and_goes_on(tmp_path):
+    # the review's case: ring 100 with sun 21 and planet 39 (100 - 21 - 78 = 1)
+    path = tmp_path / "ring100.yaml"
+    path.write_text(yaml.safe_dump({
+        "links": [1, 2, 3, 4], "turning_pairs": [[4, 1, "a"], [4, 3, "a"], [4, 2, "b"]],
+        "gear_pairs": [{"gears": [1, 2], "teeth": [21, 39]}, {"gears": [2, 3], "teeth": [39, 100], "type": "internal"}],
+        "ground": 3}))
+    code, out, err = run_cli("ratio", str(path), "--input", "1", "--output", "4", "--json")
+    assert code == 0 and json.loads(out)["ratio"][0] == pytest.approx(21 / 121)  # 1 / (1 + 100/21)
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"gearlib ratio: warning: {path}: planetary set")
+    assert "100 - 21 - 2*39 = 1" in lines[0]

@@ -28,7 +28,10 @@ def _fix(x, digits: int = 4) -> str:
 
 
 def _speed(x) -> str:
-    return format_value(x, 4)
+    try:
+        return f"{float(x):+.3f}"
+    except TypeError:
+        return format_value(x, 4)
 
 
 def to_json(t) -> dict:
@@ -112,6 +115,8 @@ def to_text(t) -> str:
     for g in t.gears:
         rows.append((g.name, "+".join(g.engaged), _fix(g.i), _fix(g.step, 3), str(g.ratio),
                      _fix(g.efficiency, 5), _circ(g), _slips(g)))
+    if not t.rated:
+        rows = [r[:5] + r[7:] for r in rows]
     widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]) - 1)]
     for r in rows:
         lines.append("  ".join(f"{x:<{w}}" for x, w in zip(r, widths)) + "  " + r[-1])
@@ -127,15 +132,17 @@ def to_text(t) -> str:
 
 def to_html(t) -> str:
     e = html.escape
-    head = "".join(f"<th>{h}</th>" for h in ("gear", "engaged", "i", "step", "ratio ω_out/ω_in", "η",
-                                              "circulating power", "slip of the open elements"))
-    body = "".join(
-        "<tr>" + "".join(f"<td>{e(x)}</td>" for x in (g.name, " ".join(g.engaged), _fix(g.i), _fix(g.step, 3),
-                                                       str(g.ratio), _fix(g.efficiency, 5), _circ(g), _slips(g)))
-        + "</tr>" for g in t.gears)
+    keep = [0, 1, 2, 3, 4, 5, 6, 7] if t.rated else [0, 1, 2, 3, 4, 7]
+    heads = ("gear", "engaged", "i", "step", "ratio ω_out/ω_in", "η", "circulating power", "slip of the open elements")
+    head = "".join(f"<th>{heads[k]}</th>" for k in keep)
+    body = ""
+    for g in t.gears:
+        cells = (g.name, " ".join(g.engaged), _fix(g.i), _fix(g.step, 3), str(g.ratio), _fix(g.efficiency, 5),
+                 _circ(g), _slips(g))
+        body += "<tr>" + "".join(f"<td>{e(cells[k])}</td>" for k in keep) + "</tr>"
     foot = ""
     if t.spread is not None:
-        foot += f"<p>Spread {_fix(t.spread)}. Efficiency with {e(t.eta_text)}.</p>"
+        foot += f"<p>Spread {_fix(t.spread)}. " + (f"Efficiency with {e(t.eta_text)}.</p>" if t.rated else "</p>")
     foot += "".join(f"<p>{e(s)}</p>" for s in _summary(t))
     return (f"<table><caption>Shift table of {e(t.mechanism.name)} (input {e(str(t.input))}, output "
             f"{e(str(t.output))})</caption><tr>{head}</tr>{body}</table>{foot}")

@@ -316,10 +316,12 @@ def _clearance(s, u) -> list:
     return out
 
 
-def check_assembly(mech, *, stacklevel: int = 2) -> tuple:
-    """Issue an :class:`gearlib.AssemblyWarning` for every assembly condition of *mech* that fails;
-    return the failing conditions."""
+def check_assembly(mech, *, where: str | None = None, stacklevel: int = 2) -> tuple:
+    """Issue an :class:`gearlib.AssemblyWarning` for every assembly condition of *mech* that fails
+    (the message starts with *where*, a file name, or the mechanism's name); return the failing
+    conditions."""
     failed = tuple(c for c in assembly_conditions(mech) if not c.ok)
+    head = where if where is not None else repr(mech.name)
     for c in failed:
-        warnings.warn(f"{mech.name!r}: planetary set {c.message}", AssemblyWarning, stacklevel=stacklevel + 1)
+        warnings.warn(f"{head}: planetary set {c.message}", AssemblyWarning, stacklevel=stacklevel + 1)
     return failed

@@ -44,7 +44,7 @@ def loads(text: str, *, where: str = "<text>") -> Mechanism:
         mech = Mechanism.from_dict(data)
     except MechanismError as err:
         raise type(err)(f"{where}: {err}") from None
-    check_assembly(mech, stacklevel=3)
+    check_assembly(mech, where=where, stacklevel=3)
     return mech
 
 
