@@ -244,7 +244,7 @@ def test_reverse_of_the_8hp_circulates_power():
 def test_efficiency_with_clutches_and_direct_drive():
     s = gl.catalog.simpson()
     # Simpson third gear: the front set locked by its clutch; exactly 1, exact and numeric
-    assert gl.davies.efficiency(s, 0, 2, 3, joined=[(1, 2)]).value == pytest.approx(1, abs=1e-12)
+    assert gl.davies.efficiency(s, 0, 2, 3, joined=[(1, 2)]).value == 1
     assert gl.davies.efficiency(s, 0, 2, 3, joined=[(1, 2)], symbolic="exact").value == 1
     res = gl.davies.efficiency(s, 0, 2, 3, joined=[(1, 2)])
     assert all(m.driver is None and m.loss == 0 for m in res.meshes)

@@ -292,6 +292,8 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
     if still:
         notes.append(f"mesh{'es' * (len(still) > 1)} {', '.join(still)} do{'es' * (len(still) == 1)} not roll "
                      "(no motion relative to the carrier): no driver and no loss")
+        if len(still) == len(net.meshes) and not bearing_z and not visc:
+            value = sympy.Integer(1) if exact else 1.0  # a direct drive: nothing dissipates, exactly 1
     ratio = _port_speed(mo, "output") / _port_speed(mo, "input")
     if exact:
         ratio = sympy.cancel(ratio)
