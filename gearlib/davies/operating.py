@@ -19,9 +19,9 @@ link's speed); a torque that opposes the port's speed takes power out.
 >>> diff = gl.catalog.load("cyl_standard_differential")   # pinion 1, side gears 2 and 3, housing 0
 >>> op = gl.davies.operating_point(diff, 0, speeds={2: 26, 3: 30}, torques={1: -10}, eta=0.98)
 >>> [(p.link, round(p.power, 3)) for p in op.ports]       # the pinion's 1400 in, out at both wheels
-[(2, -650.867), (3, -720.153), (1, 1400.0)]
+[(2, -649.867), (3, -720.153), (1, 1400.0)]
 >>> round(op.efficiency, 6)
-0.979286
+0.978586
 """
 
 from __future__ import annotations
