@@ -276,7 +276,7 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
         zphys = zetas
     powers = {} if (exact and formula is not None) else coupling_powers(mo, act)
     meshes = []
-    still = [c.name for c in net.meshes if not rolls(mo, c)]
+    still = [c.name for c in net.meshes if not _rolls(mo, c)]
     for f0 in flows0:
         c = f0.coupling
         drv, dvn = (f0.gears if tail[c] else f0.gears[::-1])
@@ -368,7 +368,7 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
         drv, dvn = (c.tail, c.head) if tail[c.name] else (c.head, c.tail)
         if exact:
             zsyms[c.name] = sympy.Symbol(f"zeta_{c.name}")
-        if not rolls(mo, c):
+        if not _rolls(mo, c):
             # no motion relative to the carrier: the mesh transmits torque like a locked joint and
             # dissipates nothing, whatever its ordinary efficiency (a direct drive)
             zetas[c.name] = sympy.Integer(0) if exact else 0.0
@@ -401,7 +401,7 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
     return zetas, used, zsyms
 
 
-def rolls(mo, coupling) -> bool:
+def _rolls(mo, coupling) -> bool:
     """Whether the gears of a mesh turn relative to its carrier (a mesh that does not roll
     passes torque without loss)."""
     values = mo.network.layout.values
