@@ -4,7 +4,7 @@ A differential (power in at the carrier, out at two side gears) or a power-split
 engine and a motor in, the wheels out) has two degrees of freedom: its efficiency depends on
 how it is run. An **operating point** fixes it: the speeds of as many ports as the train has
 freedoms, and the torques of the other ports (one, for a two-dof train with three ports).
-:func:`operating_point` then runs Davies' method as :func:`gearlib.davies.efficiency` does for
+:func:`~gearlib.davies.operating_point` then runs Davies' method as :func:`gearlib.davies.efficiency` does for
 one freedom: the motions from the given speeds, the lossless actions from the given torques,
 each mesh's driver from its carrier-relative power, its ordinary efficiency turned into a
 Coulomb coefficient, and the actions again with friction. It returns the power at every port
@@ -71,7 +71,7 @@ class MeshLoss:
 
 @dataclass(frozen=True)
 class OperatingPoint:
-    """The result of :func:`operating_point`."""
+    """The result of :func:`~gearlib.davies.operating_point`."""
 
     network: object
     motions: object

@@ -1,10 +1,10 @@
 """Drawings of chapter 3: a propagation, from the inputs through the units to the output, and a
 transmission's shift table.
 
-:func:`draw_propagation` draws a :class:`~gearlib.Propagation` or a
-:class:`~gearlib.gains.Plan` (whose ``.plot()`` comes here); :func:`plot_shift_table` and
-:func:`plot_gear_efficiency` draw a :class:`~gearlib.gains.ScheduleTable` (its ``.plot()``),
-:func:`plot_gear_power` the power flow of one of its gears.
+:func:`~gearlib.gains.draw_propagation` draws a :class:`~gearlib.Propagation` or a
+:class:`~gearlib.gains.Plan` (whose ``.plot()`` comes here); :func:`~gearlib.gains.plot_shift_table` and
+:func:`~gearlib.gains.plot_gear_efficiency` draw a :class:`~gearlib.gains.ScheduleTable` (its ``.plot()``),
+:func:`~gearlib.gains.plot_gear_power` the power flow of one of its gears.
 Each takes ``ax=``, draws and returns it.
 """
 

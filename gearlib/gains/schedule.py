@@ -3,7 +3,7 @@ combination of its shift elements.
 
 A transmission file names its brakes and clutches (``shift_elements``) and its gears
 (``schedule``, each a set of engaged elements; see :mod:`gearlib.mechanism.shifting`).
-:func:`schedule_table` (``gl.shift_table(mech)``) computes, for each gear:
+:func:`~gearlib.gains.schedule_table` (``gl.shift_table(mech)``) computes, for each gear:
 
 * the exact speed ratio ``omega_out / omega_in`` and the *transmission ratio*
   ``i = omega_in / omega_out`` that makers print, the step ``i_k / i_{k+1}`` to the next forward
@@ -96,7 +96,7 @@ class GearResult:
 
 @dataclass(frozen=True)
 class Combination:
-    """One combination of engaged elements, classified (:data:`KINDS`)."""
+    """One combination of engaged elements, classified (:data:`~gearlib.gains.schedule.KINDS`)."""
 
     elements: tuple
     kind: str

@@ -19,8 +19,8 @@ or two meshing planets each meshing one central gear):
 
 Lengths are in the unit of the modules (or pitch radii) when every pair of a set gives them,
 otherwise in modules (one module for the set). Tip diameters use the standard addendum, one (normal) module plus the
-profile shift. These are reported, not enforced: :func:`assembly_conditions` lists them,
-:func:`check_assembly` issues a :class:`gearlib.AssemblyWarning` for each one that fails, and
+profile shift. These are reported, not enforced: :func:`~gearlib.assembly_conditions` lists them,
+:func:`~gearlib.mechanism.check_assembly` issues a :class:`gearlib.AssemblyWarning` for each one that fails, and
 :func:`gearlib.load` and :func:`gearlib.shift_table` call it.
 
 >>> import gearlib as gl
