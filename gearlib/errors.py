@@ -5,6 +5,11 @@ message that names the offending element (a link, a pair, a file, an input) and 
 how to fix it. They also subclass :class:`ValueError`, so code that already catches
 ``ValueError`` keeps working.
 
+What gearlib reports without refusing (data that can be analysed but could not be built as
+given, such as a planetary set whose planets do not fit) is a Python warning of a subclass
+of :class:`GearlibWarning`; ``warnings.simplefilter("error", gl.GearlibWarning)`` turns them
+into errors.
+
 >>> import gearlib as gl
 >>> try:
 ...     gl.Mechanism.from_dict({"links": [1, 2], "gear_pairs": [{"gears": [1, 3], "teeth": [20, 40]}]})
@@ -31,6 +36,8 @@ __all__ = [
     "InputError",
     "FileFormatError",
     "GeometryError",
+    "GearlibWarning",
+    "AssemblyWarning",
 ]
 
 
@@ -109,3 +116,14 @@ class FileFormatError(MechanismError):
 class GeometryError(MechanismError):
     """Pitch radii or axis directions cannot be realised: centre distances that do not close a
     loop, radii that disagree with the tooth numbers, or a bevel gear that cannot lie on one cone."""
+
+
+class GearlibWarning(UserWarning):
+    """Base class of the warnings gearlib issues: the data can be analysed, but something in it
+    deserves a look."""
+
+
+class AssemblyWarning(GearlibWarning):
+    """A planetary set fails an assembly condition: its planets are not concentric with the sun
+    and ring (profile shift can offset a small difference), cannot be spaced equally, or
+    collide with their neighbours (:func:`gearlib.assembly_conditions`)."""

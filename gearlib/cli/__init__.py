@@ -6,15 +6,17 @@ The commands live beside the methods they run, one module per subpackage of gear
 and ``atlas``; and :mod:`.catalog`), each listing its ``COMMANDS``; a chapter adds a command to its
 module's list. FILE is a YAML or JSON mechanism file, or the name of a catalogue entry
 (``python -m gearlib catalog`` lists them). Errors in the input print one line and exit
-with status 2; ``--json`` prints machine-readable output.
+with status 2; warnings (a planetary set that cannot be assembled) print one line each and
+the command goes on; ``--json`` prints machine-readable output.
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
+import warnings
 
-from ..errors import GearlibError
+from ..errors import GearlibError, GearlibWarning
 from ._args import load_mechanism, parse_link_values, print_json
 
 __all__ = ["main", "load_mechanism", "parse_link_values", "print_json", "build_parser"]
@@ -81,6 +83,17 @@ def main(argv=None) -> int:
         if as_json and exit_.code not in (0, None):
             print_json({"error": _Parser.last_error or "invalid arguments"})
         raise
+
+    def warn(message, category, filename, lineno, file=None, line=None):
+        print(f"gearlib {args.command}: warning: {message}", file=sys.stderr)
+
+    with warnings.catch_warnings():  # a gearlib warning (a set that cannot be assembled) is one line
+        warnings.simplefilter("always", GearlibWarning)
+        warnings.showwarning = warn
+        return _run(args, as_json)
+
+
+def _run(args, as_json: bool) -> int:
     try:
         status = int(args._run(args) or 0)
         sys.stdout.flush()

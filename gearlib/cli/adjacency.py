@@ -92,7 +92,7 @@ def _frequencies_run(args) -> int:
         mech = with_bearings(mech, args.bearings)
     inputs = parse_link_values(args.input)
     values, unit, _ = convert_inputs(inputs or None, args.unit)
-    sol = speeds(mech, args.ground, values, method=args.method, **constraints(args))
+    sol = speeds(mech, args.ground, values, method=args.method, **constraints(args, mech))
     if args.contacts:
         if args.plot or args.csv:
             raise InputError("--contacts prints Penaud and Alazard's table; --plot and --csv need the fault table")

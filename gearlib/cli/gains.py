@@ -1,7 +1,12 @@
-"""Command of chapter 3 (:mod:`gearlib.gains`).
+"""Commands of chapter 3 (:mod:`gearlib.gains`).
 
 ``gains FILE --ground G --input I --output O [--symbolic] [--json]``: the propagation path
 through the kinematic units and the global gain.
+
+``shifts FILE [--eta ETA] [--eta-pair A,B=ETA] [--k K] [--no-efficiency] [--json | --csv [--table T]]``:
+the shift table of a transmission's schedule (:func:`gearlib.shift_table`): every gear's exact
+ratio, step and efficiency, the slip of every open element, the power flow, and every
+combination of its shift elements classified.
 """
 
 from __future__ import annotations
@@ -11,7 +16,7 @@ import sympy
 from ..gains.propagation import theta
 from ..gains.relation import propagate
 from ..mechanism.kinematics import _to_complex, format_value
-from ._args import Command, add_common, constraints, load_mechanism, print_json
+from ._args import Command, add_common, add_eta, constraints, eta_spec, load_mechanism, print_json
 
 # ----------------------------------------------------------------------------- gains
 
@@ -34,7 +39,7 @@ def _number(v):
 
 def _gains_run(args) -> int:
     mech = load_mechanism(args.file)
-    prop = propagate(mech, args.output, args.input, ground=args.ground, **constraints(args))
+    prop = propagate(mech, args.output, args.input, ground=args.ground, **constraints(args, mech))
     exact = prop.relation()
     symbolic = prop.relation("symbolic") if (args.symbolic or mech.is_symbolic) else None
     gains = prop.gains
@@ -64,7 +69,45 @@ def _gains_run(args) -> int:
     return 0
 
 
+# ----------------------------------------------------------------------------- shifts
+
+
+def _shifts_arguments(p):
+    p.add_argument("file", metavar="FILE", help="transmission file (YAML/JSON) with shift_elements and schedule, "
+                                                "or catalogue name (e.g. zf_8hp70)")
+    p.add_argument("--ground", help="the housing (default: the file's `ground`)")
+    p.add_argument("--input", metavar="LINK", help="input shaft (default: the file's first `inputs` entry)")
+    p.add_argument("--output", metavar="LINK", help="output shaft (default: the file's `output`)")
+    add_eta(p)
+    p.add_argument("--k", action="append", type=int, default=None, metavar="K",
+                   help="classify every combination of K engaged elements (repeat; default: as many as the "
+                        "schedule's gears engage)")
+    p.add_argument("--no-efficiency", action="store_true", help="kinematics only (no efficiency, no power flow)")
+    out = p.add_mutually_exclusive_group()
+    out.add_argument("--json", action="store_true", help="print the whole table as JSON")
+    out.add_argument("--csv", action="store_true", help="print one table as CSV (see --table)")
+    p.add_argument("--table", choices=("gears", "combinations"), default="gears",
+                   help="with --csv: the gears of the schedule (default) or the classified combinations")
+
+
+def _shifts_run(args) -> int:
+    from ..gains.schedule import schedule_table
+
+    mech = load_mechanism(args.file)
+    table = schedule_table(mech, eta=eta_spec(args, mech), k=args.k, efficiency=not args.no_efficiency,
+                           ground=args.ground, input=args.input, output=args.output)
+    if args.json:
+        print_json(table.to_json())
+    elif args.csv:
+        print(table.to_csv(args.table), end="")
+    else:
+        print(table)
+    return 0
+
+
 COMMANDS = (
     Command("gains", "the unit-by-unit propagation path from input(s) to output and the global gain",
             _gains_arguments, _gains_run),
+    Command("shifts", "the shift table of a transmission: ratio, step, slips, efficiency and power flow of every "
+            "gear, and every combination of its shift elements classified", _shifts_arguments, _shifts_run),
 )

@@ -14,7 +14,7 @@ import sympy
 from ..mechanism.kinematics import METHODS, _to_complex, format_value, ratio, speeds
 from ..mechanism.mobility import dof
 from ..errors import InputError
-from ._args import Command, add_common, constraints, load_mechanism, parse_link_values, print_json
+from ._args import Command, add_common, add_constraints, constraints, load_mechanism, parse_link_values, print_json
 
 # ----------------------------------------------------------------------------- speeds
 
@@ -30,7 +30,7 @@ def _speeds_arguments(p):
 def _speeds_run(args) -> int:
     mech = load_mechanism(args.file)
     inputs = parse_link_values(args.input)
-    sol = speeds(mech, args.ground, inputs, method=args.method, **constraints(args))
+    sol = speeds(mech, args.ground, inputs, method=args.method, **constraints(args, mech))
     if args.json:
         print_json(sol.to_json())
     else:
@@ -53,7 +53,7 @@ def _ratio_arguments(p):
 
 def _ratio_run(args) -> int:
     mech = load_mechanism(args.file)
-    kw = dict(ground=args.ground, relative_to=args.relative_to, **constraints(args))
+    kw = dict(ground=args.ground, relative_to=args.relative_to, **constraints(args, mech))
     value = None
     if not mech.is_symbolic:
         value = ratio(mech, args.output, args.input, **kw)
@@ -79,11 +79,14 @@ def _ratio_run(args) -> int:
 
 def _dof_arguments(p):
     p.add_argument("file", metavar="FILE", help="mechanism file (YAML/JSON) or catalogue name")
+    p.add_argument("--ground", help="the fixed link (default: the file's `ground`)")
+    add_constraints(p)
     p.add_argument("--json", action="store_true")
 
 
 def _dof_run(args) -> int:
-    mob = dof(load_mechanism(args.file))
+    mech = load_mechanism(args.file)
+    mob = dof(mech, args.ground, **constraints(args, mech))
     if args.json:
         print_json({"dof": mob.rank, "planar": mob.planar, "count": mob.count, "explanation": list(mob.explanation)})
     else:

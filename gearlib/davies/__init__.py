@@ -11,6 +11,8 @@ it to any one-degree-of-freedom gear train with parallel or intersecting axes gi
 * :func:`motions`, :func:`actions` - the two Kirchhoff laws, with friction as constitutive rows;
 * :func:`coupling_powers`, :func:`mesh_flows`, :func:`power_flow` - power and power flow;
 * :func:`efficiency` - the overall efficiency, numeric or as a formula;
+* :func:`operating_point` - trains with two or more degrees of freedom (differentials,
+  power-split devices) rated at given port speeds and torques;
 * :func:`turning_conditions`, :func:`efficiency_formulas`, :func:`derivative_check`;
 * :func:`torque_balance_efficiency` - an independent, conventional check;
 * drawings, a widget, friction models and a generator of random consistent trains.
@@ -34,6 +36,7 @@ EXPORTS = {
     "power": ("coupling_powers", "column_powers", "tellegen", "power_flow", "MeshFlow", "mesh_flows",
              "real_flows", "mesh_power_ratio"),
     "overall": ("efficiency", "Efficiency", "MeshResult", "GLOVER", "eta_symbol"),
+    "operating": ("operating_point", "OperatingPoint", "PortResult", "MeshLoss"),
     "formulas": ("TurningCondition", "turning_conditions", "FormulaCase", "efficiency_formulas",
                 "derivative_check"),
     "conventional": ("torque_balance_efficiency", "TorqueBalance"),

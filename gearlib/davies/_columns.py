@@ -31,7 +31,7 @@ class Coupling:
     tail: object
     head: object
     kind: str  # "revolute", "mesh" or "virtual"
-    role: str | None = None  # "input", "output", "held", "joined" or None
+    role: str | None = None  # "input", "output", "port", "held", "joined" or None
     axis: object = None  # geometry.Axis for revolute and virtual couplings
     mesh: object = None  # geometry.MeshGeometry for meshes
     source: object = None  # the TurningPair or GearPair
@@ -109,7 +109,7 @@ def variables(c: Coupling, planar, red, bearing_set, viscous_set):
     if c.kind == "revolute" and not planar:
         perp = screws.perpendicular(ax.direction)
         acts.append(Variable(f"{torque_name(perp, planar)}_{c.name}", c.name, red(screws.torque(perp)), "constraint"))
-    if c.role in ("input", "output"):
+    if c.role in ("input", "output", "port"):
         acts.append(Variable(f"{tname}_{c.name}", c.name, red(screws.torque(ax.direction)), c.role))
     elif c.locked:
         acts.append(Variable(f"{tname}_{c.name}", c.name, red(screws.torque(ax.direction)), "reaction"))

@@ -179,12 +179,14 @@ class Network:
 # ------------------------------------------------------------------------------ building
 def network(mech: Mechanism, ground=None, input=None, output=None, *, held=(), joined=(), bearings=None,
             viscous=None, chords=None, layout=None, mode: str = "auto", exact: bool = True, radii=None,
-            axes=None, pitch_points=None) -> Network:
+            axes=None, pitch_points=None, ports=()) -> Network:
     """The Davies network of *mech* with ports at *input* and *output* (both relative to *ground*).
 
     Parameters
     ----------
     held : links held to the ground (brakes); joined : pairs of links turning together (clutches).
+    ports : further port links (role ``"port"``, each with a torque between the ground and the
+        link), for trains with more than one degree of freedom (:func:`gearlib.davies.operating_point`).
     bearings : couplings (names, or turning pairs as ``(u, v)``) that get a Coulomb friction torque.
     viscous : couplings (names, link pairs or gear pairs) that get a viscous torque.
     chords : names of the couplings to use as chords of the spanning tree.
@@ -247,6 +249,11 @@ def network(mech: Mechanism, ground=None, input=None, output=None, *, held=(), j
 
     specs.append(port("input", input))
     specs.append(port("output", output))
+    extra = tuple(mech.resolve(p, "port") for p in ports)
+    for p in extra:
+        if p in (ground, input, output) or extra.count(p) > 1:
+            raise InputError(f"port link {p} is the ground or another port; each port is a different link")
+        specs.append(port("port", p))
     for gp, mg in zip(mech.gear_pairs, lay.meshes):
         specs.append(("mesh", None, gp.gears[0], gp.gears[1], None, mg, gp, False))
     notes = list(lay.notes)
@@ -256,8 +263,10 @@ def network(mech: Mechanism, ground=None, input=None, output=None, *, held=(), j
         if h in (ground, input, output):
             raise ConstraintError(f"held link {h} is the ground or a port; hold another link")
         brakes.append(port("held", h, locked=True))
+    joined_pairs = []
     for pair in joined or ():
         u, v = (mech.resolve(x, "joined link") for x in pair)
+        joined_pairs.append((u, v))
         ax = lay.common_axis(u, v)
         if ax is None:
             raise ConstraintError(f"joined links {u} and {v} are not coaxial; a clutch joins two links on one axis")
@@ -293,6 +302,6 @@ def network(mech: Mechanism, ground=None, input=None, output=None, *, held=(), j
                           tuple(chords) if chords else None)
     graph.chords  # noqa: B018  (choose the spanning tree now, so a bad choice of chords fails here)
     return Network(mech, ground, input, output, lay, couplings, graph, coords, acoords, tuple(mvars), tuple(avars),
-                   exact, tuple(notes), {"held": held, "bearings": bearing_set, "viscous": viscous_set})
+                   exact, tuple(notes), {"held": held, "joined": tuple(joined_pairs), "bearings": bearing_set, "viscous": viscous_set})
 
 

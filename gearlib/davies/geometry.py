@@ -136,6 +136,11 @@ def radius_symbols(mech: Mechanism) -> dict:
 def _pair_radii(gp) -> tuple:
     if gp.radii is not None:
         return tuple(_exact(r) for r in gp.radii)
+    if gp.teeth is not None and (gp.module is not None or gp.normal_module is not None):
+        # pitch radii from the (transverse) module, m z / 2; a helical pair's m_n / cos(beta) is
+        # taken as a rational number, as radii given as decimals are
+        m = _exact(float(gp.transverse_module))
+        return tuple(m * sympy.Rational(t, 2) for t in gp.teeth)
     if gp.teeth is not None:
         return tuple(sympy.Rational(t, 2) for t in gp.teeth)  # module 1
     e = gp.e

@@ -132,7 +132,9 @@ def motions(net: Network, speed=1, *, check: bool = True) -> Motions:
     if nullity > 1:
         raise ConstraintError(
             f"{net.mechanism.name!r} has {nullity} degrees of freedom with link {net.ground} grounded; Davies' "
-            "efficiency needs one. Hold links with held=[...] (brakes) or join them with joined=[(u, v)] (clutches)"
+            "efficiency needs one. Hold links (brakes: held=[...], on the command line --held LINK) or join them "
+            "(clutches: joined=[(u, v)], --joined U,V; or a gear of the schedule, --gear NAME), or rate the train at "
+            "an operating point (gl.davies.operating_point, or efficiency --speed LINK=W --torque LINK=T)"
         )
     primary = net.motion_names().index(next(v.name for v in net.motion_vars if v.coupling == net.port("input").name))
     if net.exact:
@@ -174,7 +176,8 @@ def check_willis(mo: Motions, tol: float = 1e-9) -> None:
         scale = 1 / sympy.sympify(mo.speed)
     else:
         scale = 1
-    sol = speeds(mech, net.ground, {net.input: speed}, method="numeric", held=net.options.get("held") or ())
+    sol = speeds(mech, net.ground, {net.input: speed}, method="numeric", held=net.options.get("held") or (),
+                 joined=net.options.get("joined") or ())
     for c in net.couplings:
         if c.kind == "mesh" or c.locked:
             continue

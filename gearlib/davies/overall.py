@@ -93,6 +93,8 @@ class Efficiency:
         return float(self.value)
 
     def mesh(self, a, b) -> MeshResult:
+        """The mesh between gears *a* and *b* (its ``driver`` and ``driven`` are None when it does
+        not roll)."""
         for m in self.meshes:
             if set(m.gears) == {a, b}:
                 return m
@@ -105,7 +107,8 @@ class Efficiency:
                 return f"{float(x):.{digits}g}"
             except TypeError:
                 return str(x)
-        return [(m.coupling, m.gears, m.carrier, f"{m.driver} -> {m.driven}", fmt(m.eta), fmt(m.zeta),
+        return [(m.coupling, m.gears, m.carrier, "does not roll" if m.driver is None else f"{m.driver} -> {m.driven}",
+                 fmt(m.eta), fmt(m.zeta),
                  fmt(m.virtual_power), fmt(m.loss)) for m in self.meshes]
 
     def __str__(self) -> str:
@@ -141,7 +144,8 @@ class Efficiency:
             "output": str(self.network.output), "ground": str(self.network.ground),
             "formula": None if self.formula is None else str(self.formula),
             "meshes": [{"coupling": m.coupling, "gears": [str(g) for g in m.gears], "carrier": str(m.carrier),
-                        "driver": str(m.driver), "driven": str(m.driven), "eta": num(m.eta), "zeta": num(m.zeta),
+                        "driver": None if m.driver is None else str(m.driver),
+                        "driven": None if m.driven is None else str(m.driven), "eta": num(m.eta), "zeta": num(m.zeta),
                         "virtual_power": num(m.virtual_power), "loss": num(m.loss)} for m in self.meshes],
             "powers": {k: num(v) for k, v in self.powers.items()},
             "notes": list(self.notes),
@@ -272,6 +276,7 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
         zphys = zetas
     powers = {} if (exact and formula is not None) else coupling_powers(mo, act)
     meshes = []
+    still = [c.name for c in net.meshes if not _rolls(mo, c)]
     for f0 in flows0:
         c = f0.coupling
         drv, dvn = (f0.gears if tail[c] else f0.gears[::-1])
@@ -279,8 +284,16 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
         loss = None
         if not (exact and formula is not None):
             loss = powers[c] if not exact else sympy.nsimplify(powers[c], rational=True)
+        if c in still:  # rounding noise of a mesh that does not roll: exactly nothing
+            drv = dvn = None
+            vp, loss = (0, 0) if exact else (0.0, 0.0 if loss is not None else None)
         meshes.append(MeshResult(c, f0.gears, f0.carrier, drv, dvn, used[c], zphys.get(c),
                                  sympy.cancel(vp) if exact else vp, loss))
+    if still:
+        notes.append(f"mesh{'es' * (len(still) > 1)} {', '.join(still)} do{'es' * (len(still) == 1)} not roll "
+                     "(no motion relative to the carrier): no driver and no loss")
+        if len(still) == len(net.meshes) and not bearing_z and not visc:
+            value = sympy.Integer(1) if exact else 1.0  # a direct drive: nothing dissipates, exactly 1
     ratio = _port_speed(mo, "output") / _port_speed(mo, "input")
     if exact:
         ratio = sympy.cancel(ratio)
@@ -355,6 +368,12 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
         drv, dvn = (c.tail, c.head) if tail[c.name] else (c.head, c.tail)
         if exact:
             zsyms[c.name] = sympy.Symbol(f"zeta_{c.name}")
+        if not _rolls(mo, c):
+            # no motion relative to the carrier: the mesh transmits torque like a locked joint and
+            # dissipates nothing, whatever its ordinary efficiency (a direct drive)
+            zetas[c.name] = sympy.Integer(0) if exact else 0.0
+            used[c.name] = _lookup(eta, gp.gears, c.name, drv, dvn, None if symbolic is True else GLOVER[gp.kind])
+            continue
         if c.name in zeta_given:
             z = zeta_given[c.name]
             zetas[c.name] = z / _scale(net, c.name) if exact else z
@@ -380,6 +399,19 @@ def _mesh_zetas(net, mo, tail, eta, zeta_given, symbolic, exact):
         zetas[c.name] = sympy.cancel(z) if len(getattr(z, "free_symbols", ())) > 1 else z
         used[c.name] = value
     return zetas, used, zsyms
+
+
+def _rolls(mo, coupling) -> bool:
+    """Whether the gears of a mesh turn relative to its carrier (a mesh that does not roll
+    passes torque without loss)."""
+    values = mo.network.layout.values
+    for x in mo.link(coupling.tail, coupling.carrier):
+        try:
+            if abs(_num(x, values)) > 1e-12:
+                return True
+        except TypeError:  # a symbolic motion: assume it rolls
+            return True
+    return False
 
 
 def _zeta_spec(net, zeta):

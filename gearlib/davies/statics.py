@@ -116,7 +116,7 @@ def _clean(x):
 
 
 def actions(net: Network, *, lossless: bool | None = None, zeta=None, bearings=None, viscous=None,
-            torque=1, internal: bool = False) -> Actions:
+            torque=1, internal: bool = False, torques=None) -> Actions:
     """Solve the cutset equations with the input torque *torque* as primary variable.
 
     Parameters
@@ -130,6 +130,8 @@ def actions(net: Network, *, lossless: bool | None = None, zeta=None, bearings=N
     internal : *zeta* is per unit of the network's (possibly unnormalised) friction screw, as
         :func:`gearlib.davies.mesh_power_ratio` gives it with ``internal=True``; this keeps
         symbolic work free of square roots.
+    torques : ``{port torque variable: value}`` fixed instead of the input torque (a train with
+        more than one degree of freedom needs one torque per port beyond its freedoms).
     """
     if lossless is None:
         lossless = not (zeta or bearings or viscous)
@@ -166,8 +168,12 @@ def actions(net: Network, *, lossless: bool | None = None, zeta=None, bearings=N
                 if v.name not in viscous:
                     raise InputError(f"viscous column {v.name} needs its torque value")
                 row([(k, 1)], viscous[v.name] / v.scale if v.scale != 1 else viscous[v.name])
-    primary = next(k for k, v in enumerate(vars_) if v.role == "input")
-    row([(primary, 1)], torque)
+    if torques is None:
+        primary = next(k for k, v in enumerate(vars_) if v.role == "input")
+        row([(primary, 1)], torque)
+    else:
+        for name, value in torques.items():
+            row([(index[name], 1)], value)
     if exact:
         a = an.col_join(sympy.Matrix(rows)) if an.rows else sympy.Matrix(rows)
         b = sympy.Matrix([0] * an.rows + list(rhs))

@@ -10,6 +10,8 @@ transmission and input units and a structure matrix. This package holds
 * ``propagation`` and ``relation`` - the propagation plan from inputs to output
   (:func:`~gearlib.plan`) and the global relation it gives (:func:`~gearlib.propagate`, :func:`~gearlib.unit_ratio`);
 * ``transmission`` - every gear of an automatic transmission, the shift table;
+* ``schedule`` - the shift table of a transmission's own schedule: ratios, steps, slips,
+  efficiencies, power flow, and every combination of its shift elements classified;
 * ``robots`` - Chen's transmission lines, units and structure matrix;
 * ``scaling`` - how solve time grows with the length of a train;
 * ``lever`` and ``lever_plot`` - lever diagrams of planetary trains (Benford and Leising), a
@@ -29,11 +31,12 @@ EXPORTS = {
     "relation": ("Propagation", "propagate", "unit_ratio", "METHODS"),
     "transmission": ("OperatingMode", "ModeResult", "ShiftTable", "operating_modes", "shift_table",
                      "plot_mode_sweep", "LIU_CHEN_MODES"),
+    "schedule": ("GearResult", "MeshPower", "Combination", "ScheduleTable", "schedule_table", "classify", "KINDS"),
     "robots": ("GearedRobot", "TransmissionLine", "RobotUnit", "geared_robot", "canonical_spanning_tree",
                "UNIT_TYPES", "unit_gains"),
     # gearlib.gains.scaling is the module; its function is gearlib.gains.scaling.scaling
     "scaling": ("ScalingCurve", "dense_nullspace_ratio", "plot_scaling"),
-    "drawing": ("draw_propagation",),
+    "drawing": ("draw_propagation", "plot_shift_table", "plot_gear_efficiency", "plot_gear_power"),
     "lever": ("LeverSet", "LeverNode", "Lever", "LeverDiagram", "lever_diagram"),
     "lever_plot": ("lever_geometry", "draw_levers"),
     "widget": ("TransmissionExplorer", "transmission_explorer"),

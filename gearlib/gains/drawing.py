@@ -1,14 +1,17 @@
-"""Drawing of a propagation: from the inputs through the units to the output (chapter 3).
+"""Drawings of chapter 3: a propagation, from the inputs through the units to the output, and a
+transmission's shift table.
 
-:func:`draw_propagation` takes ``ax=``, draws and returns it. It draws a
-:class:`~gearlib.Propagation` or a :class:`~gearlib.gains.Plan` (whose ``.plot()``
-comes here).
+:func:`~gearlib.gains.draw_propagation` draws a :class:`~gearlib.Propagation` or a
+:class:`~gearlib.gains.Plan` (whose ``.plot()`` comes here); :func:`~gearlib.gains.plot_shift_table` and
+:func:`~gearlib.gains.plot_gear_efficiency` draw a :class:`~gearlib.gains.ScheduleTable` (its ``.plot()``),
+:func:`~gearlib.gains.plot_gear_power` the power flow of one of its gears.
+Each takes ``ax=``, draws and returns it.
 """
 
 from __future__ import annotations
 from ..units._draw import _axes, _finish
 
-__all__ = ['draw_propagation']
+__all__ = ['draw_propagation', 'plot_shift_table', 'plot_gear_efficiency', 'plot_gear_power']
 
 
 def draw_propagation(prop, ax=None, *, title=None, font_size=9):
@@ -64,3 +67,86 @@ def _tex(name: str) -> str:
     if name.startswith("theta_"):
         return rf"$\theta_{{{name[6:]}}}$"
     return name
+
+
+def plot_shift_table(table, ax=None, *, title=None, font_size=8):
+    """A transmission's shift table as a grid, gears by shift elements: engaged elements shaded,
+    every open one with its slip speed per unit input speed (a brake at its link's speed, a
+    clutch at the difference of its links' speeds), coloured by its size. *table* is a
+    :class:`~gearlib.gains.ScheduleTable` (``gl.shift_table(mech)``)."""
+    import numpy as np
+
+    elements = [e.name for e in table.mechanism.shift_elements]
+    gears = [g.name for g in table.gears]
+    ax = _axes(ax, (1.2 + 0.9 * len(elements), 0.9 + 0.38 * len(gears)))
+    slip = np.full((len(gears), len(elements)), np.nan)
+    for i, g in enumerate(table.gears):
+        for j, e in enumerate(elements):
+            if e in g.slips:
+                slip[i, j] = abs(float(g.slips[e]))
+    top = np.nanmax(slip) if np.isfinite(slip).any() else 1.0
+    ax.imshow(np.nan_to_num(slip, nan=0.0) / (top or 1.0), cmap="Oranges", vmin=0, vmax=1.6, aspect="auto")
+    for i, g in enumerate(table.gears):
+        for j, e in enumerate(elements):
+            if e in g.engaged:
+                ax.add_patch(_rect(j, i, "0.35"))
+                ax.text(j, i, "engaged", ha="center", va="center", color="white", fontsize=font_size)
+            else:
+                ax.text(j, i, f"{float(g.slips[e]):+.2f}", ha="center", va="center", fontsize=font_size)
+    ax.set_xticks(range(len(elements)), elements, fontsize=font_size + 1)
+    ax.set_yticks(range(len(gears)), gears, fontsize=font_size + 1)
+    ax.tick_params(length=0)
+    for spine in ax.spines.values():
+        spine.set_visible(False)
+    ax.set_xlabel("shift element", fontsize=font_size + 1)
+    ax.set_title(title if title is not None else f"{table.mechanism.name}: slip of the open elements "
+                 "(per unit input speed)", fontsize=font_size + 1)
+    return ax
+
+
+def _rect(x, y, color):
+    from matplotlib.patches import Rectangle
+
+    return Rectangle((x - 0.5, y - 0.5), 1, 1, facecolor=color, edgecolor="white", linewidth=1.5)
+
+
+def plot_gear_efficiency(table, ax=None, *, title=None, font_size=8, bottom=None):
+    """Each gear's efficiency from a :class:`~gearlib.gains.ScheduleTable`, as bars labelled
+    with their value; the reverse gear (negative ratio) drawn in grey."""
+    names = [g.name for g in table.gears if g.efficiency is not None]
+    values = [g.efficiency for g in table.gears if g.efficiency is not None]
+    colors = ["0.6" if float(g.ratio) < 0 else "tab:blue" for g in table.gears if g.efficiency is not None]
+    ax = _axes(ax, (6.0, 3.0))
+    ax.bar(range(len(values)), values, color=colors)
+    low = bottom if bottom is not None else max(0.0, min(values) - 0.02)
+    ax.set_ylim(low, 1.0 + (1.0 - low) * 0.12)
+    for k, v in enumerate(values):
+        ax.text(k, v, f"{v:.4f}", ha="center", va="bottom", fontsize=font_size)
+    ax.set_xticks(range(len(values)), names, fontsize=font_size + 1)
+    ax.set_ylabel("efficiency", fontsize=font_size + 1)
+    ax.axhline(1.0, color="black", linewidth=0.6)
+    ax.set_title(title if title is not None else f"{table.mechanism.name}: efficiency of every gear",
+                 fontsize=font_size + 1)
+    return ax
+
+
+def plot_gear_power(gear, ax=None, *, title=None, font_size=8):
+    """The power flow of one gear of a shift table (a :class:`~gearlib.gains.GearResult`): for
+    every mesh its real power (measured from the frame) and its rolling power (measured from its
+    carrier, what its friction acts on), per unit input power; the dashed line is the input power."""
+    import numpy as np
+
+    meshes = list(gear.meshes)
+    ax = _axes(ax, (6.4, 3.0))
+    x = np.arange(len(meshes))
+    ax.bar(x - 0.2, [abs(m.real) for m in meshes], 0.4, color="tab:blue", label="real (from the frame)")
+    ax.bar(x + 0.2, [m.rolling for m in meshes], 0.4, color="tab:orange", label="rolling (from the carrier)")
+    ax.axhline(1.0, color="black", linestyle="--", linewidth=0.8)
+    labels = [f"{a}-{b}\n(carrier {m.carrier})" for m, (a, b) in ((m, m.gears) for m in meshes)]
+    ax.set_xticks(x, labels, fontsize=font_size)
+    ax.set_ylabel("|power| / input power", fontsize=font_size + 1)
+    ax.legend(fontsize=font_size, frameon=False, loc="upper left")
+    top = max([1.0] + [abs(m.real) for m in meshes] + [m.rolling for m in meshes])
+    ax.set_ylim(0, top * 1.25)
+    ax.set_title(title if title is not None else f"gear {gear.name}: power through every mesh", fontsize=font_size + 1)
+    return ax

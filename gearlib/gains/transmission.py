@@ -152,9 +152,26 @@ class ShiftTable:
                 f"<th>ratio (null space)</th><th>agree</th></tr>{body}</table>")
 
 
-def shift_table(mech: Mechanism, modes) -> ShiftTable:
-    """Each operating mode's ratio ``theta_out / theta_in`` by unit-by-unit propagation, with the
-    null-space solution beside it (see the module documentation)."""
+def shift_table(mech: Mechanism, modes=None, **options):
+    """The shift table of a transmission.
+
+    Without *modes*: the gears of the mechanism's own ``schedule`` (its brakes, clutches and
+    gears as data), with ratios, steps and spread, link and slip speeds, efficiencies and power
+    flow, and every combination of elements classified: a
+    :class:`~gearlib.gains.ScheduleTable` (options ``eta``, ``k``, ``efficiency``, ``ground``,
+    ``input``, ``output``: see :func:`gearlib.gains.schedule_table`).
+
+    With *modes* (each a ground, input, output and optional held and joined links, as Liu,
+    Chen and Chang give their gears): each mode's ratio ``theta_out / theta_in`` by unit-by-unit
+    propagation, with the null-space solution beside it (see the module documentation), a
+    :class:`~gearlib.gains.ShiftTable`.
+    """
+    if modes is None:
+        from .schedule import schedule_table
+
+        return schedule_table(mech, **options)
+    if options:
+        raise DataFormatError(f"shift_table with operating modes takes no options; got {', '.join(options)}")
     rows = []
     for m in operating_modes(modes):
         prop = propagate(mech, m.output, [m.input], ground=m.ground, held=m.held, joined=m.joined)
@@ -165,7 +182,10 @@ def shift_table(mech: Mechanism, modes) -> ShiftTable:
 def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, title=None):
     """Every mode's ratio as the tooth number of one gear varies: the static twin of
     :func:`gearlib.gains.transmission_explorer`. ``pair`` names a gear pair, ``gear``
-    the gear of that pair whose tooth number takes each of ``values``."""
+    the gear of that pair whose tooth number takes each of ``values``. Tooth numbers with
+    which a planetary set cannot be assembled (:func:`gearlib.assembly_conditions`) are drawn
+    as open markers."""
+    from ..mechanism.assembly import assembly_conditions
     from ..mechanism.plot import _axes
 
     ax = _axes(ax, figsize=(6.0, 3.4))
@@ -174,13 +194,23 @@ def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, titl
     values = list(values)
     modes = operating_modes(modes)
     curves = {m.name: [] for m in modes}
+    fits = []
     for n in values:
         teeth = (n, gp.teeth[1]) if gear == gp.gears[0] else (gp.teeth[0], n)
-        table = shift_table(mech.with_gear_pair(gp.gears, teeth=teeth), modes)
+        variant = mech.with_gear_pair(gp.gears, teeth=teeth)
+        fits.append(all(c.ok for c in assembly_conditions(variant)))
+        table = shift_table(variant, modes)
         for row in table.rows:
             curves[row.mode.name].append(float(row.ratio))
     for name, ys in curves.items():
-        ax.plot(values, ys, marker="o", markersize=3, label=name)
+        line, = ax.plot(values, ys, marker="o", markersize=3, label=name)
+        bad = [(x, y) for x, y, ok in zip(values, ys, fits) if not ok]
+        if bad:
+            ax.plot(*zip(*bad), linestyle="none", marker="o", markersize=5, markerfacecolor="white",
+                    markeredgecolor=line.get_color())
+    if not all(fits):
+        ax.plot([], [], linestyle="none", marker="o", markersize=5, markerfacecolor="white", markeredgecolor="0.3",
+                label="does not assemble")
     ax.axvline(gp.teeth[gp.gears.index(gear)], color="0.6", linestyle=":", linewidth=1)
     ax.axhline(0, color="black", linewidth=0.8)
     ax.set_xlabel(f"teeth of gear {gear} in pair {gp.label}")

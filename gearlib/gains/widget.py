@@ -58,11 +58,17 @@ class TransmissionExplorer(Explorer):
 
             raise InputError(f"unknown tooth number {sorted(unknown)[0]!r}; use {', '.join(self.teeth)}")
         self.teeth.update(teeth)
+        from ..mechanism.assembly import assembly_conditions
+
         m = self.modes[self.mode]
-        prop = propagate(self.mechanism_for(), m.output, [m.input], ground=m.ground, held=m.held, joined=m.joined)
+        mech = self.mechanism_for()
+        prop = propagate(mech, m.output, [m.input], ground=m.ground, held=m.held, joined=m.joined)
         self.ratio = prop.ratio
         path = " then ".join(f"{s.unit.name}" for s in prop.steps)
         self.text = f"{m}: ratio {format_value(self.ratio, 8)} through {path}"
+        failed = [c for c in assembly_conditions(mech) if not c.ok]
+        if failed:  # the kinematics holds, but the set could not be built: say so beside the ratio
+            self.text += f" (does not assemble: {failed[0].set.label}, {failed[0].condition})"
         if self._canvas is None:
             self._canvas = _graph_canvas(figsize=(5.4, 2.4))
         self.image = self._canvas.png(lambda ax: draw_propagation(prop, ax=ax, title=""))

@@ -6,7 +6,8 @@ vertex), turning pairs thin edges labelled with their axis. This package holds
 
 * the data: ``elements`` (links, turning pairs, gear pairs, bearings), ``data``
   (:class:`~gearlib.Mechanism`, validated and frozen), ``shifting`` (a transmission's brakes,
-  clutches and schedule), ``io`` (YAML and JSON files) and
+  clutches and schedule), ``assembly`` (can the planets of each planetary set be built in?),
+  ``io`` (YAML and JSON files) and
   ``generate`` (random valid mechanisms, long serial trains);
 * the graph and the Willis (fundamental-circuit) equations: ``graph``, ``equations``;
 * the solvers and the degrees of freedom: ``kinematics`` (:func:`~gearlib.speeds`,
@@ -27,6 +28,7 @@ EXPORTS = {
     "elements": ("Link", "Bearing", "TurningPair", "GearPair", "GEAR_KINDS"),
     "data": ("Mechanism",),
     "shifting": ("ShiftElement", "GearState", "SHIFT_KINDS"),
+    "assembly": ("PlanetarySet", "AssemblyCondition", "planetary_sets", "assembly_conditions", "check_assembly"),
     "io": ("load", "save", "loads"),
     "generate": ("random_mechanism", "serial_train"),
     "graph": ("to_networkx", "FundamentalCircuit", "fundamental_circuits", "displacement_graph"),
@@ -46,7 +48,7 @@ TOP = (
     "to_networkx", "fundamental_circuits", "FundamentalCircuit", "displacement_graph",
     "willis_equations", "willis_matrix", "WillisEquation", "omega", "ratio_symbols",
     "dof", "Mobility", "choose_inputs", "speeds", "ratio", "Solution", "Constraints",
-    "draw_graph", "plot_speeds", "number", "random_mechanism", "serial_train",
+    "draw_graph", "plot_speeds", "number", "random_mechanism", "serial_train", "assembly_conditions",
     "draw_sketch", "sketch_layout", "Sketch",
     "plot", "sketch", "widgets", "display", "equations", "generate", "graph", "io", "kinematics", "mobility",
 )

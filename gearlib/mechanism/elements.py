@@ -28,6 +28,7 @@ from .._common.parse import (
     parse_expr,
     parse_link_id,
     parse_positive,
+    parse_real,
     parse_real_expr,
     parse_teeth,
 )
@@ -215,7 +216,10 @@ class GearPair:
     with their teeth, or a signed ``ratio``. ``radii`` are pitch radii; or give the
     ``module`` (transverse, in the unit of the radii), or the ``normal_module`` of a helical
     pair with its ``helix_angle`` (transverse module = normal module / cos(helix angle)), and
-    the pitch radii follow from the teeth (:attr:`pitch_radii`). ``carrier`` is filled in by
+    the pitch radii follow from the teeth (:attr:`pitch_radii`). ``profile_shift`` gives the
+    profile-shift coefficients ``(x_a, x_b)`` (in modules) and ``pressure_angle`` the standard
+    (normal) pressure angle, 20 degrees unless given; only the assembly conditions of planetary
+    sets read them (:func:`gearlib.assembly_conditions`). ``carrier`` is filled in by
     :class:`Mechanism` when left out.
     """
 
@@ -230,6 +234,8 @@ class GearPair:
     module: float | None = None
     normal_module: float | None = None
     helix_angle: sympy.Expr | None = None
+    profile_shift: tuple[float, float] | None = None
+    pressure_angle: sympy.Expr | None = None
 
     def __post_init__(self):
         a, b = _pair_of(self.gears, "gear pair", "gears")
@@ -292,6 +298,21 @@ class GearPair:
                     f"{where}: helix_angle {self.helix_angle!r} must be at least 0 and under 90 degrees; "
                     "write degrees as 20*deg")
             object.__setattr__(self, "helix_angle", beta)
+        if self.profile_shift is not None:
+            xa, xb = _pair_of(self.profile_shift, where, "profile_shift")
+            shifts = tuple(parse_real(x, f"{where} profile_shift") for x in (xa, xb))
+            if any(abs(x) > 2 for x in shifts):
+                raise DataFormatError(f"{where}: profile_shift {list(shifts)} are coefficients in modules "
+                                      "(typically between -1 and 1); each must lie within [-2, 2]")
+            if self.teeth is None:
+                raise DataFormatError(f"{where}: a profile_shift needs `teeth`")
+            object.__setattr__(self, "profile_shift", shifts)
+        if self.pressure_angle is not None:
+            alpha = parse_real_expr(self.pressure_angle, f"{where} pressure_angle")
+            if not 0 < float(alpha) < float(sympy.pi / 4):
+                raise DataFormatError(f"{where}: pressure_angle {self.pressure_angle!r} must be between 0 and 45 "
+                                      "degrees; write degrees as 20*deg")
+            object.__setattr__(self, "pressure_angle", alpha)
         if (self.module is not None or self.normal_module is not None) and self.teeth is None:
             raise DataFormatError(f"{where}: a module gives pitch radii only with `teeth`")
         if self.radii is not None and self.transverse_module is not None:
@@ -390,7 +411,7 @@ class GearPair:
         if not isinstance(data, Mapping):
             raise DataFormatError(f"{where}: expected a mapping such as {{gears: [1, 2], teeth: [20, 40]}}, got {data!r}")
         fields = ("gears", "teeth", "ratio", "carrier", "type", "kind", "angles", "radii", "name", "module",
-                  "normal_module", "helix_angle")
+                  "normal_module", "helix_angle", "profile_shift", "pressure_angle")
         _check_keys(data, fields, where)
         if "gears" not in data:
             raise DataFormatError(f"{where}: missing `gears: [a, b]`")
@@ -422,4 +443,8 @@ class GearPair:
             out["normal_module"] = self.normal_module
         if self.helix_angle is not None:
             out["helix_angle"] = expr_to_data(self.helix_angle)
+        if self.profile_shift is not None:
+            out["profile_shift"] = list(self.profile_shift)
+        if self.pressure_angle is not None:
+            out["pressure_angle"] = expr_to_data(self.pressure_angle)
         return out

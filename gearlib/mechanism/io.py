@@ -16,13 +16,16 @@ import pathlib
 import yaml
 
 from ..errors import FileFormatError, MechanismError
+from .assembly import check_assembly
 from .data import Mechanism
 
 __all__ = ["load", "save", "loads"]
 
 
 def loads(text: str, *, where: str = "<text>") -> Mechanism:
-    """Parse a mechanism from YAML (or JSON, which is valid YAML) text."""
+    """Parse a mechanism from YAML (or JSON, which is valid YAML) text. A planetary set that
+    cannot be assembled as given is reported with a :class:`gearlib.AssemblyWarning`
+    (:func:`gearlib.assembly_conditions`), not refused."""
     if not text.strip():
         raise FileFormatError(f"{where}: the file is empty; it should describe a mechanism (links, gear_pairs, ...)")
     try:
@@ -38,9 +41,11 @@ def loads(text: str, *, where: str = "<text>") -> Mechanism:
             f"found {type(data).__name__}"
         )
     try:
-        return Mechanism.from_dict(data)
+        mech = Mechanism.from_dict(data)
     except MechanismError as err:
         raise type(err)(f"{where}: {err}") from None
+    check_assembly(mech, where=where, stacklevel=3)
+    return mech
 
 
 def load(path) -> Mechanism:
