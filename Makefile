@@ -46,6 +46,11 @@ $(STAMP): environment.txt pyproject.toml
 	$(BIN)/python .ci/sync_venv.py environment.txt
 	$(BIN)/python -c "import gearlib, jupyter_book, nbval, sympy, matplotlib"
 	$(BIN)/python -m ipykernel install --sys-prefix --name python3 --display-name "Python 3 (gearlib)" >/dev/null
+	@# nbgrader is the course kit's grader, run from its command line: its server and lab extensions
+	@# would load in every reader's JupyterLab (about 4 s at each start) and are not needed there
+	for e in formgrader validate_assignment assignment_list course_list; do \
+		$(BIN)/jupyter server extension disable --sys-prefix nbgrader.server_extensions.$$e >/dev/null 2>&1; done
+	$(BIN)/jupyter labextension disable --level=sys_prefix @jupyter/nbgrader >/dev/null 2>&1
 	@touch $(STAMP)
 
 venv: $(STAMP)
