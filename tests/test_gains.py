@@ -224,3 +224,74 @@ def test_cli_gains_third_gear():
     assert "theta_3,5 = G1(1,5;4,5)*G2(3,5;1,5)*theta_4,5" in text.stdout
     bad = run("gains", "liu_chen_fig1", "--ground", "5", "--input", "4", "--input", "1", "--output", "3")
     assert bad.returncode == 2 and "needs 1 input" in bad.stderr and len(bad.stderr.strip().splitlines()) == 1
+
+
+# ------------------------------------------- relative inputs, any ground, brakes: against the exact solve
+def _exact_coefficients(m, ground, ins, out, held):
+    """theta_out per unit of each input, from gl.speeds (the exact solve of every Willis equation)."""
+    coef = []
+    for k in range(len(ins)):
+        sol = gl.speeds(m, ground=ground, inputs={x: int(j == k) for j, x in enumerate(ins)}, held=held)
+        o, r = out if isinstance(out, tuple) else (out, ground)
+        coef.append(sol[o] - sol[r])
+    return coef
+
+
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 10**6), st.integers(3, 10), st.integers(1, 2), st.data())
+def test_propagation_equals_the_exact_solve_for_relative_inputs_and_any_ground(seed, n, dof, data):
+    """Issue 25: relative inputs whose links are neither the ground (Rules 4 and 5 with the carrier
+    held, the transmission's second gear with link 5 held) once raised 'not independent' where the
+    exact solve has an answer. Any ground, any brake, inputs u/v between any two links: the
+    propagation either equals gl.speeds or both refuse the inputs."""
+    try:
+        m = gl.random_mechanism(n, dof=dof + 1, rng=seed)  # one more freedom: room for a brake
+    except ValueError:
+        return
+    links = list(m.link_ids)
+    ground = data.draw(st.sampled_from(links))
+    rest = [x for x in links if x != ground]
+    held = data.draw(st.sampled_from([(), (rest[0],)]))
+    free = [x for x in rest if x not in held]
+    ins = []
+    for _ in range(gl.dof(m, ground, held=held)):
+        u = data.draw(st.sampled_from(free))
+        v = data.draw(st.sampled_from([x for x in links if x != u]))
+        ins.append((u, v))
+    out = data.draw(st.sampled_from([x for x in links if x != ground] + [(links[-1], links[-2])]))
+    try:
+        want = _exact_coefficients(m, ground, ins, out, held)
+    except gl.InputError:
+        with pytest.raises(gl.InputError):
+            gl.propagate(m, out, ins, ground=ground, held=held).relation()
+        return
+    got = gl.propagate(m, out, ins, ground=ground, held=held).relation()
+    assert [got[x] for x in ins] == want
+
+
+# Rules 4 and 5 on their template units (the paper's setting: carrier k held, local input theta_y,p
+# between two gears). Path products typed by hand from the templates' gear pairs: K5-4D meshes 4-1
+# (e_1_4), 2-1 (e_2_1), 2-3 (e_2_3); K5-7D meshes 1-3, 1-4, 2-1.
+e14, e21, e23, e13 = E("e_1_4"), E("e_2_1"), E("e_2_3"), E("e_1_3")
+RULE_CASES = {  # rule: (template, output, input, paths E_p_.. of eqs. (9a), (9b))
+    4: ("K5-4D", (1, 3), (2, 4), {"E_p_x": 1 / e14, "E_p_q": e23 / (e21 * e14), "E_p_y": 1 / (e21 * e14)}),
+    5: ("K5-7D", (2, 4), (3, 4), {"E_p_x": 1 / (e14 * e21), "E_p_y": e13 / e14}),
+}
+
+
+@pytest.mark.parametrize("n", [4, 5])
+def test_rules_4_and_5_with_any_link_held(n):
+    template, out, inp, paths = RULE_CASES[n]
+    m = next(e for e in gl.ku_catalogue(variants=True) if e.name == template).mechanism()
+    want = PAPER_RULES[n].subs({E(k): v for k, v in paths.items()})
+    for ground in m.link_ids:  # the carrier k first, then each gear
+        assert same(gl.propagate(m, out, [inp], ground=ground).symbolic()[inp], want), ground
+
+
+def test_transmission_second_gear_relative_input():
+    """Link 5 held, input theta_2,1, output theta_8,1: (e17 e78 - 1)/(e16 e62 - 1) (issue 25)."""
+    m = gl.catalog.load("liu_chen_transmission")
+    got = gl.propagate(m, (8, 1), [(2, 1)], ground=5).symbolic()[(2, 1)]
+    assert same(got, (E("e_1_7") * E("e_7_8") - 1) / (E("e_1_6") * E("e_6_2") - 1))
+    assert gl.unit_ratio(m, output=(8, 1), input=(2, 1), ground=5) == \
+        (lambda s: s[8] - s[1])(gl.speeds(m, ground=5, inputs={(2, 1): 1}))

@@ -30,7 +30,7 @@ KU2 (K4-1S) fired by theta_1,5 (2-link chain from KU1)
 from __future__ import annotations
 
 from collections import defaultdict, deque
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from .._common.nogc import no_gc
 from ..errors import ConstraintError, InputError
@@ -252,11 +252,15 @@ def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joine
 
     gen: dict = {}  # links made known together (by one step) share a generation
 
-    def make_known(link, how, generation=None):
-        pending = deque([(link, how)])
+    def make_known(link, how, generation=None, more=()):
+        """Make *link* known (and *more* seeds with it), then every link an input or clutch ties
+        to them; an input or clutch whose two links are both known already is an equation."""
+        pending = deque([(link, how, None), *more])
         while pending:
-            x, h = pending.popleft()
+            x, h, via = pending.popleft()
             if x in known_by:
+                if via is not None:  # reached twice: the second edge closes a loop
+                    equations.append(("edge", via))
                 continue
             known_by[x] = h
             order[x] = counter[0]
@@ -274,15 +278,13 @@ def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joine
                 if other in known_by:
                     equations.append(("edge", e))
                 else:
-                    pending.append((other, ("edge", k, x, -sign)))
+                    pending.append((other, ("edge", k, x, -sign), e))
 
-    make_known(ground, ("ground",))
     for h in held:
-        if h in known_by:
-            if known_by[h][0] != "ground" and known_by[h][0] != "held":
-                raise ConstraintError(f"held link {h} is already fixed by an input; do not hold it")
-            continue
-        make_known(h, ("held",))
+        if h == ground:
+            raise ConstraintError(f"link {h} is the ground and also held; the ground is already fixed")
+    # the ground and the brakes first, together: an input between two of them is an equation
+    make_known(ground, ("ground",), more=[(h, ("held",), None) for h in dict.fromkeys(held)])
     from .unit_tree import _tree
 
     def degenerate(i, a, b):
@@ -387,8 +389,15 @@ def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joine
         steps.append(s)
         for z in s.checks:
             equations.append(("check", s.index, z))
+        late = []
         for z in s.outputs:
-            make_known(z, ("step", s.index), s.order)
+            if z in known_by:  # made known meanwhile through an input or clutch from another output
+                late.append(z)
+                equations.append(("check", s.index, z))
+            else:
+                make_known(z, ("step", s.index), s.order)
+        if late:
+            steps[-1] = replace(s, outputs=tuple(z for z in s.outputs if z not in late), checks=s.checks + tuple(late))
 
     out_units = set(units_of.get(out[0], ())) | set(units_of.get(out[1], ())) if out else set()
     while True:
