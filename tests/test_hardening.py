@@ -91,7 +91,7 @@ API = [
     ("gains: unknown method", lambda: gl.propagate(PLAN, output=4, inputs=[1], ground=3).relation("fast"),
      gl.InputError, "method must be one of"),
     ("gains: unknown output", lambda: gl.unit_ratio(PLAN, output=44, input=1, ground=3), gl.UnknownLinkError,
-     "link 44"),
+     "output 44"),
     ("shift table: mode not a mapping", lambda: gl.shift_table(TRANS, [("4th", 9, 2, 8)]), gl.DataFormatError,
      "expected a mapping"),
     # chapter 4: frequencies and cornering

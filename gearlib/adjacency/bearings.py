@@ -28,11 +28,12 @@ import pathlib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
-import yaml
 
+from .._common.files import parse_text, read_text
 from ..errors import DataFormatError, FileFormatError, MechanismError, UnknownLinkError
 from ..mechanism.elements import Bearing, TurningPair
 from ..mechanism.data import Mechanism
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["BearingFrequencies", "bearing_frequencies", "read_bearings", "load_bearings", "with_bearings"]
 
@@ -162,19 +163,8 @@ def read_bearings(data, *, where: str = "bearings") -> tuple[tuple[tuple, Bearin
 
 def load_bearings(path) -> tuple[tuple[tuple, Bearing], ...]:
     """Read a bearings file (YAML or JSON, format in the module documentation)."""
-    path = pathlib.Path(path)
-    if not path.exists():
-        raise FileFormatError(f"{path}: no such file")
-    if path.is_dir():
-        raise FileFormatError(f"{path}: is a directory, not a bearings file")
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except UnicodeDecodeError:
-        raise FileFormatError(f"{path}: not a text file (expected YAML or JSON)") from None
-    except yaml.YAMLError as err:
-        mark = getattr(err, "problem_mark", None)
-        at = f" at line {mark.line + 1}" if mark else ""
-        raise FileFormatError(f"{path}: not valid YAML or JSON{at}") from None
+    path, text = read_text(path, "bearings file")
+    data = parse_text(text, str(path)) if text.strip() else None
     if data is None:
         raise FileFormatError(f"{path}: the file is empty; it should list bearings")
     try:
@@ -183,6 +173,7 @@ def load_bearings(path) -> tuple[tuple[tuple, Bearing], ...]:
         raise type(err)(str(err) if str(err).startswith(str(path)) else f"{path}: {err}") from None
 
 
+@takes_mechanism
 def with_bearings(mech: Mechanism, bearings) -> Mechanism:
     """A copy of *mech* whose turning pairs hold the given bearings: a list of
     ``(pair, Bearing)``, a list of mappings with a ``pair`` key, or the path of a bearings

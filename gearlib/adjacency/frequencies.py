@@ -48,6 +48,7 @@ from .._common.parse import to_fraction
 from ..errors import ConstraintError, DataFormatError, InputError
 from ..mechanism.elements import Bearing
 from ..mechanism.data import Mechanism
+from ..mechanism._accept import as_mechanism
 
 __all__ = [
     "FrequencyRow",
@@ -331,7 +332,7 @@ def frequency_table(mech: Mechanism, speeds=None, *, ground=None, inputs=None, b
     if isinstance(mech, Solution):
         mech, speeds = mech.mechanism, mech if speeds is None else speeds
     if not isinstance(mech, Mechanism):
-        raise DataFormatError(f"frequency_table needs a gl.Mechanism first, got {type(mech).__name__}")
+        mech = as_mechanism(mech)
     if convention not in CONVENTIONS:
         raise DataFormatError(f"convention must be one of {', '.join(CONVENTIONS)}, got {convention!r}")
     if bearings is not None:

@@ -36,6 +36,7 @@ import sympy
 from .._common.matview import MatrixView, format_entry
 from ..errors import ConstraintError, DataFormatError, InputError
 from ..mechanism.data import Mechanism
+from ..mechanism.data import requires_mechanism
 
 __all__ = [
     "link_table",
@@ -54,6 +55,7 @@ __all__ = [
 ]
 
 
+@requires_mechanism
 def link_table(mech: Mechanism) -> dict:
     """Penaud's table ``T``: ``{(i, j): "p" or T(i, j)}`` for every turning and gear pair.
 
@@ -72,6 +74,7 @@ def link_table(mech: Mechanism) -> dict:
     return T
 
 
+@requires_mechanism
 def adjacency_matrix(mech: Mechanism, *, exact: bool = False):
     """The adjacency matrix ``M`` (one row per gear pair, one column per link).
 
@@ -100,6 +103,33 @@ def adjacency_matrix(mech: Mechanism, *, exact: bool = False):
     return np.array([[0j if v == 0 else complex(sympy.N(v, 20)) for v in row] for row in rows], dtype=complex)
 
 
+def _matrix(A, what: str) -> np.ndarray:
+    """*A* as a 2-D numeric array (a 1-D array is one row), finite; else a DataFormatError."""
+    try:
+        A = np.asarray(A)
+    except (ValueError, TypeError):
+        raise DataFormatError(f"{what}: expected a matrix of numbers (rows of equal length)") from None
+    if A.dtype == object or A.dtype.kind not in "biufc":
+        try:
+            A = A.astype(complex if A.dtype == object else float)
+            if A.dtype == complex and not np.iscomplex(A).any():
+                A = A.real
+        except (ValueError, TypeError):
+            raise DataFormatError(f"{what}: expected a matrix of numbers, got entries of type {A.dtype}") from None
+    if A.ndim > 2:
+        raise DataFormatError(f"{what}: expected a matrix (2 dimensions), got an array of shape {A.shape}")
+    A = np.atleast_2d(A)
+    if A.dtype.kind in "fc" and not np.isfinite(A).all():
+        i, j = np.argwhere(~np.isfinite(A))[0]
+        raise DataFormatError(f"{what}: entry ({i}, {j}) is {A[i, j]}; every entry must be a finite number")
+    return A
+
+
+def _tolerance(value, what: str) -> None:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not 0 <= value < 1:
+        raise DataFormatError(f"{what}: a relative tolerance is a number in [0, 1), such as 1e-10; got {value!r}")
+
+
 def null_space(A: np.ndarray, rtol: float = 1e-10, *, basis: str = "orthonormal") -> np.ndarray:
     """A basis of ``Ker A`` (as columns).
 
@@ -113,7 +143,8 @@ def null_space(A: np.ndarray, rtol: float = 1e-10, *, basis: str = "orthonormal"
     """
     if basis not in ("orthonormal", "reduced"):
         raise DataFormatError(f"basis must be 'orthonormal' or 'reduced', got {basis!r}")
-    A = np.atleast_2d(np.asarray(A))
+    A = _matrix(A, "A")
+    _tolerance(rtol, "rtol")
     n = A.shape[1]
     if A.shape[0] == 0:
         K = np.eye(n, dtype=A.dtype if np.iscomplexobj(A) else float)
@@ -142,7 +173,8 @@ def reduced_basis(K: np.ndarray, rtol: float = 1e-9) -> tuple[np.ndarray, list[i
     >>> pivots, B.round(12).tolist()
     ([0, 1], [[1.0, 0.0], [0.0, 1.0], [3.0, -1.5]])
     """
-    K = np.asarray(K)
+    K = _matrix(K, "K")
+    _tolerance(rtol, "rtol")
     d = K.shape[1]
     pivots: list[int] = []
     if d == 0:
@@ -180,7 +212,8 @@ def same_subspace(K1: np.ndarray, K2: np.ndarray, tol: float = 1e-9) -> bool:
     >>> gl.same_subspace(K, -3 * K), gl.same_subspace(K, np.array([[2.0], [1.0]]))
     (True, False)
     """
-    K1, K2 = np.atleast_2d(np.asarray(K1)), np.atleast_2d(np.asarray(K2))
+    K1, K2 = _matrix(K1, "K1"), _matrix(K2, "K2")
+    _tolerance(tol, "tol")
     if K1.shape[0] != K2.shape[0]:
         return False
 
@@ -194,6 +227,7 @@ def same_subspace(K1: np.ndarray, K2: np.ndarray, tol: float = 1e-9) -> bool:
     return bool(np.abs(projector(K1) - projector(K2)).max(initial=0.0) <= tol)
 
 
+@requires_mechanism
 def constraint_rows(mech: Mechanism, *, zero_speed=(), equal=()) -> np.ndarray:
     """Penaud's constraint rows ``C`` (``C Omega = 0``): a 1 in the column of each link of
     ``zero_speed`` (a held link), and ``+1, -1`` for each pair of links in ``equal``.
@@ -222,6 +256,7 @@ def constraint_rows(mech: Mechanism, *, zero_speed=(), equal=()) -> np.ndarray:
     return np.array(rows).reshape(len(rows), n)
 
 
+@requires_mechanism
 def speed_ratio_matrix(mech: Mechanism, *, zero_speed=(), normalize_to=(), equal=(),
                        basis: str = "orthonormal") -> np.ndarray:
     """Penaud's speed-ratio matrix ``Omega_0`` (links x degrees of freedom): ``Ker [M; C]``.
@@ -304,7 +339,12 @@ def direction(z, tol: float = 1e-12) -> Direction:
     >>> d.magnitude, round(d.degrees, 9)
     (2.0, -90.0)
     """
-    z = complex(z)
+    try:
+        z = complex(z)
+    except (TypeError, ValueError, OverflowError):
+        raise DataFormatError(f"direction: expected a (complex) number, got {z!r}"[:200]) from None
+    if not cmath.isfinite(z):
+        raise DataFormatError(f"direction: expected a finite number, got {z}")
     r = abs(z)
     if r <= tol:
         return Direction(0.0, 0.0)
@@ -315,6 +355,7 @@ def direction(z, tol: float = 1e-12) -> Direction:
 
 
 # ---------------------------------------------------------------------------- display
+@requires_mechanism
 def show_link_table(mech: Mechanism) -> MatrixView:
     """Penaud's table ``T`` as a readable N x N table: ``(p)`` for a turning pair, the
     complex weight ``N e^{i theta}`` for a gear pair, empty otherwise."""

@@ -46,6 +46,7 @@ from .bearings import with_bearings
 from .planetary import planetary_sets
 from ..errors import DataFormatError, InputError
 from ..mechanism.data import Mechanism
+from ..mechanism._accept import as_mechanism
 
 __all__ = ["FaultLine", "FaultTable", "fault_table", "plot_fault_map", "FAMILIES"]
 
@@ -269,7 +270,7 @@ def fault_table(mech, speeds=None, *, ground=None, inputs=None, unit=None, refer
     if isinstance(mech, Solution):
         mech, speeds = mech.mechanism, mech if speeds is None else speeds
     if not isinstance(mech, Mechanism):
-        raise DataFormatError(f"fault_table needs a gl.Mechanism first, got {type(mech).__name__}")
+        mech = as_mechanism(mech)
     if convention not in ("standard", "paper"):
         raise DataFormatError(f"convention must be standard or paper, got {convention!r}")
     harmonics = max(1, _count(harmonics, "harmonics"))

@@ -31,10 +31,13 @@ from __future__ import annotations
 
 import math
 from collections import defaultdict
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from ..errors import ConstraintError
+from .._common.parse import shown
+from ..errors import ConstraintError, DataFormatError
 from ..mechanism.data import Mechanism
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["PlanetarySet", "planetary_sets", "tooth_factors"]
 
@@ -134,6 +137,7 @@ def _central_label(mech, k, pairs, gears, axes, ground):
     return best, labels
 
 
+@takes_mechanism
 def planetary_sets(mech: Mechanism, speeds=None, ground=None) -> tuple[PlanetarySet, ...]:
     """Every planetary set of *mech*, found from its graph (see the module documentation).
 
@@ -141,10 +145,17 @@ def planetary_sets(mech: Mechanism, speeds=None, ground=None) -> tuple[Planetary
     decide whether a carrier without planet counts turns; without them every carrier
     other than the ground (``mech.ground``) counts as turning.
     """
-    ground = mech.ground if ground is None else mech.resolve(ground)
+    ground = mech.ground if ground is None else mech.resolve(ground, "ground")
     if speeds is not None and hasattr(speeds, "constraints"):
         ground = speeds.constraints.ground
         speeds = dict(speeds.items())
+    elif speeds is not None:
+        if not isinstance(speeds, Mapping):
+            raise DataFormatError(f"speeds: expected gl.speeds(...) or a mapping link -> speed, got {shown(speeds)}")
+        speeds = {mech.resolve(k, "speeds"): v for k, v in speeds.items()}
+        missing = [x for x in mech.link_ids if x not in speeds]
+        if missing:
+            raise DataFormatError(f"speeds: give the speed of every link; link {missing[0]} is missing")
     by_carrier: dict = defaultdict(list)
     for gp in mech.gear_pairs:
         by_carrier[gp.carrier].append(gp)

@@ -13,11 +13,10 @@ True
 
 from __future__ import annotations
 
-import functools
 import pathlib
 
-from ..errors import DataFormatError, ToothNumberError, UnknownLinkError
-from ..mechanism.io import load as _load_file
+from ..errors import DataFormatError, ToothNumberError
+from ..mechanism._accept import CATALOGUE, catalogue_names, catalogue_path, load_catalogue
 from ..mechanism.data import Mechanism
 
 __all__ = [
@@ -34,26 +33,22 @@ __all__ = [
     "ravigneaux",
 ]
 
-DATA = pathlib.Path(__file__).with_name("data")
+DATA = CATALOGUE
 
 
 def names() -> list[str]:
     """Names of every catalogue entry (the YAML file names without ``.yaml``)."""
-    return sorted(p.stem for p in DATA.glob("*.yaml"))
+    return list(catalogue_names())
 
 
 def path(name: str) -> pathlib.Path:
-    """The YAML file of catalogue entry *name*."""
-    p = DATA / f"{name}.yaml"
-    if not p.exists():
-        raise UnknownLinkError(f"no catalogue entry {name!r}; entries are {', '.join(names())}")
-    return p
+    """The YAML file of catalogue entry *name* (a name from :func:`names`, not a path)."""
+    return catalogue_path(name)
 
 
-@functools.cache
 def load(name: str) -> Mechanism:
     """The catalogue mechanism *name* (see :func:`names`)."""
-    return _load_file(path(name))
+    return load_catalogue(name)
 
 
 def _with_teeth(mech: Mechanism, teeth: dict) -> Mechanism:

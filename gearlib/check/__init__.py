@@ -29,6 +29,8 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
+from .._common.parse import shown
+from ..errors import UnknownLinkError
 from ._choice import Choice, Groups, LinkId, LinkSet, Parts
 from ._core import KINDS, REGISTRY, Check, Prediction, register, register_custom
 from ._design import Condition, Design, Matrix
@@ -66,8 +68,13 @@ def get(name: str) -> Check:
     _load_all()
     try:
         return REGISTRY[name]
-    except KeyError:
-        raise AttributeError(f"no exercise check {name!r}; see gl.check.names()") from None
+    except (KeyError, TypeError):
+        raise UnknownCheckError(f"no exercise check {shown(name)}; see gl.check.names()") from None
+
+
+class UnknownCheckError(UnknownLinkError, AttributeError):
+    """No exercise check of that name (an :class:`AttributeError` too, so ``hasattr(gl.check, name)``
+    keeps working)."""
 
 
 def _order(check: Check) -> tuple:

@@ -64,12 +64,12 @@ def _mechanism(data):
         elif isinstance(data, str):
             if len(data) > MAX_TEXT:
                 raise Unreadable("the text is far longer than this mechanism needs")
-            import yaml
+            from .._common.files import parse_text
 
             try:
-                parsed = yaml.safe_load(data)
-            except yaml.YAMLError:
-                parsed = None
+                parsed = parse_text(data, "your data")
+            except GearlibError:
+                parsed = None  # loads() below says what is wrong
             if isinstance(parsed, dict):
                 _bounded_data(parsed)
             mech = loads(data, where="your data")

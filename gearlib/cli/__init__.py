@@ -7,13 +7,19 @@ and ``atlas``; and :mod:`.catalog`), each listing its ``COMMANDS``; a chapter ad
 module's list. FILE is a YAML or JSON mechanism file, or the name of a catalogue entry
 (``python -m gearlib catalog`` lists them). Errors in the input print one line and exit
 with status 2; warnings (a planetary set that cannot be assembled) print one line each and
-the command goes on; ``--json`` prints machine-readable output.
+the command goes on; ``--json`` prints machine-readable output, valid JSON on every path
+(errors included, as ``{"error": ...}``). On a terminal or file whose encoding cannot show
+``∠`` or Greek letters they are written in ASCII (``/_``, ``omega``); a reader that goes away
+(``| head``) ends the command quietly.
 """
 
 from __future__ import annotations
 
 import argparse
+import codecs
+import os
 import sys
+import unicodedata
 import warnings
 
 from ..errors import GearlibError, GearlibWarning
@@ -73,9 +79,43 @@ def _quiet_broken_pipe() -> int:
     return 0
 
 
+_ASCII = {"\u2220": "/_", "\u2212": "-", "\u2013": "-", "\u2014": "--", "\u2192": "->", "\u2190": "<-",
+          "\u00d7": "x", "\u00b7": "*", "\u00b0": " deg", "\u2264": "<=", "\u2265": ">=", "\u2248": "~",
+          "\u2026": "...", "\u2032": "'", "\u00b1": "+/-", "\u221e": "inf", "\u2260": "!=", "\u00b2": "^2",
+          "\u00b3": "^3", "\u2009": " ", "\u00a0": " ", "\u202f": " "}
+
+
+def _ascii(char: str) -> str:
+    if char in _ASCII:
+        return _ASCII[char]
+    name = unicodedata.name(char, "")
+    if name.startswith("GREEK"):  # GREEK SMALL LETTER OMEGA -> omega, CAPITAL -> Omega
+        word = name.split()[-1].lower()
+        return word.capitalize() if "CAPITAL" in name else word
+    decomposed = unicodedata.normalize("NFKD", char).encode("ascii", "ignore").decode()
+    return decomposed or "?"
+
+
+def _fallback(err):
+    """Codec error handler: a character the output's encoding lacks, written in ASCII."""
+    return "".join(_ascii(c) for c in err.object[err.start:err.end]), err.end
+
+
+codecs.register_error("gearlib-ascii", _fallback)
+
+
+def _readable_streams() -> None:
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.reconfigure(errors="gearlib-ascii")
+        except (AttributeError, ValueError, OSError):  # a stream without reconfigure (a test's capture)
+            pass
+
+
 def main(argv=None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     as_json = "--json" in argv
+    _readable_streams()
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
@@ -102,5 +142,15 @@ def _run(args, as_json: bool) -> int:
         return _quiet_broken_pipe()
     except GearlibError as err:
         return _fail(f"gearlib {args.command}: error: {err}", as_json)
-    except (OSError, RecursionError) as err:
-        return _fail(f"gearlib {args.command}: error: {err}", as_json)
+    except (OSError, RecursionError, MemoryError) as err:
+        return _fail(f"gearlib {args.command}: error: {' '.join(str(err).split()) or type(err).__name__}", as_json)
+    except KeyboardInterrupt:
+        _fail(f"gearlib {args.command}: interrupted", as_json)
+        return 130
+    except Exception as err:  # a bug: still one line (and valid JSON); GEARLIB_TRACEBACK=1 shows where
+        if os.environ.get("GEARLIB_TRACEBACK"):
+            raise
+        text = " ".join(str(err).split())[:300]
+        _fail(f"gearlib {args.command}: internal error ({type(err).__name__}: {text}); this is a bug in gearlib, "
+              "please report it (GEARLIB_TRACEBACK=1 shows where)", as_json)
+        return 1

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import pathlib
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -51,12 +52,27 @@ def parse_link_values(items, *, what: str = "--input", need_value: bool = True) 
             if need_value:
                 raise GearlibError(f"{what} {item!r}: expected LINK=SPEED such as {item}=1")
             value = None
+        if key.strip() in out:
+            raise InputError(f"{what} {key.strip()} is given twice ({out[key.strip()]} and {value.strip() if value else ''});"
+                             " give each link once")
         out[key.strip()] = None if value is None else value.strip()
     return out
 
 
 def print_json(data) -> None:
-    print(json.dumps(data, indent=2, sort_keys=False))
+    """Print *data* as JSON; a number that is not finite (which JSON cannot hold: ``Infinity``
+    and ``NaN`` are not JSON) becomes ``null``."""
+    print(json.dumps(_finite(data), indent=2, sort_keys=False, allow_nan=False))
+
+
+def _finite(data):
+    if isinstance(data, float):
+        return data if math.isfinite(data) else None
+    if isinstance(data, dict):
+        return {k: _finite(v) for k, v in data.items()}
+    if isinstance(data, (list, tuple)):
+        return [_finite(v) for v in data]
+    return data
 
 
 def show(args, result) -> int:

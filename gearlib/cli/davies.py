@@ -60,6 +60,8 @@ def _numbers(items, what):
         key, sep, value = item.partition("=")
         if not sep or not key.strip():
             raise InputError(f"{what} {item!r}: expected LINK=VALUE such as 3=26")
+        if key.strip() in out:
+            raise InputError(f"{what} {key.strip()} is given twice; give each link once")
         try:
             out[key.strip()] = float(value)
         except ValueError:

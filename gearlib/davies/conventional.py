@@ -27,6 +27,8 @@ import sympy
 
 from ..errors import ConstraintError, InputError
 from ..mechanism.kinematics import speeds
+from ..mechanism._accept import takes_mechanism
+from ._eta import check_eta
 
 __all__ = ["torque_balance_efficiency", "TorqueBalance"]
 
@@ -51,6 +53,7 @@ def _solve(rows, rhs, exact):
     return list(np.linalg.solve(a, np.array(rhs, dtype=float)))
 
 
+@takes_mechanism
 def torque_balance_efficiency(mech, ground=None, input=None, output=None, *, eta=0.98, held=(),
                               symbolic: bool = False) -> TorqueBalance:
     """Efficiency of *mech* (input and output relative to *ground*) by a torque balance.
@@ -61,7 +64,8 @@ def torque_balance_efficiency(mech, ground=None, input=None, output=None, *, eta
     """
     ground = mech.resolve(mech.ground if ground is None else ground, "ground")
     input, output = mech.resolve(input, "input"), mech.resolve(output, "output")
-    held = tuple(mech.resolve(h) for h in held)
+    held = mech.resolve_links(held, "held link")
+    check_eta(mech, eta, symbolic=symbolic)
     sol = speeds(mech, ground, {input: 1}, method="exact", held=held)
     w = {x: sympy.sympify(sol[x]) for x in mech.link_ids}
     for v in w.values():

@@ -258,14 +258,13 @@ def network(mech: Mechanism, ground=None, input=None, output=None, *, held=(), j
         specs.append(("mesh", None, gp.gears[0], gp.gears[1], None, mg, gp, False))
     notes = list(lay.notes)
     brakes = []
-    held = tuple(mech.resolve(h, "held link") for h in (held or ()))
+    held = mech.resolve_links(held, "held link")
     for h in held:
         if h in (ground, input, output):
             raise ConstraintError(f"held link {h} is the ground or a port; hold another link")
         brakes.append(port("held", h, locked=True))
     joined_pairs = []
-    for pair in joined or ():
-        u, v = (mech.resolve(x, "joined link") for x in pair)
+    for u, v in mech.resolve_pairs(joined, "joined link"):
         joined_pairs.append((u, v))
         ax = lay.common_axis(u, v)
         if ax is None:

@@ -33,6 +33,7 @@ from .coupling_network import network as make_network
 from .overall import efficiency
 from .power import mesh_flows
 from .statics import actions as solve_actions
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["TurningCondition", "turning_conditions", "FormulaCase", "efficiency_formulas", "derivative_check"]
 
@@ -97,6 +98,7 @@ def _split(expr, facts, values):
     return sign, sympy.Mul(*changing)
 
 
+@takes_mechanism
 def turning_conditions(mech, ground=None, input=None, output=None, *, radii="symbols", held=(), **options) -> tuple:
     """The turning condition of every mesh (:class:`TurningCondition`), with the pitch radii as
     symbols (``radii="symbols"`` or a mapping as in :func:`gearlib.davies.layout`)."""
@@ -125,6 +127,7 @@ class FormulaCase:
     applies: bool
 
 
+@takes_mechanism
 def efficiency_formulas(mech, ground=None, input=None, output=None, *, radii="symbols", both_ways: bool = True,
                         eta=None, held=(), **options) -> tuple:
     """Every efficiency formula of the train (Laus's Table 5): for each input/output choice and

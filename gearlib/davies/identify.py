@@ -25,6 +25,7 @@ from .motion import motions as solve_motions
 from .coupling_network import network as make_network
 from .power import column_powers, coupling_powers, mesh_flows, mesh_power_ratio
 from .statics import actions as solve_actions
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["LossFit", "efficiencies_from_losses"]
 
@@ -41,6 +42,7 @@ class LossFit:
     efficiency: float
 
 
+@takes_mechanism
 def efficiencies_from_losses(mech, ground=None, input=None, output=None, *, losses: dict, check: bool = True,
                              **options) -> LossFit:
     """Ordinary efficiencies of the meshes whose losses (power per unit input power, positive

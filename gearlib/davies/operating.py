@@ -34,9 +34,11 @@ from ..errors import ConstraintError, GeometryError, InputError
 from . import _solve
 from .coupling_network import network as make_network
 from .motion import Motions
+from ._eta import check_eta
 from .overall import GLOVER, _mesh_zetas, _zeta_spec
 from .power import column_powers, coupling_powers, mesh_flows
 from .statics import actions as solve_actions
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["operating_point", "OperatingPoint", "PortResult", "MeshLoss"]
 
@@ -148,6 +150,7 @@ def _values(mech, spec, what) -> dict:
     return out
 
 
+@takes_mechanism
 def operating_point(mech, ground=None, *, speeds, torques, ports=(), eta=None, zeta=None, held=(), joined=(),
                     check: bool = True, mode: str = "auto", radii=None) -> OperatingPoint:
     """Rate *mech* at an operating point (see the module documentation).
@@ -174,6 +177,7 @@ def operating_point(mech, ground=None, *, speeds, torques, ports=(), eta=None, z
         raise InputError("an operating point needs two ports or more: give speeds and torques on the shafts")
     net = make_network(mech, ground, order[0], order[1], ports=order[2:], held=held, joined=joined, exact=False,
                        mode=mode, radii=radii)
+    check_eta(mech, eta, names=[c.name for c in net.meshes])
     couplings = {c.head: c for c in net.couplings if c.role in ("input", "output", "port")}
     mo = _motions(net, couplings, speeds)
     if check:

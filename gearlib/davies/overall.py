@@ -34,10 +34,12 @@ import sympy
 from .._common.parse import parse_expr
 from ..errors import ConstraintError, InputError
 from . import _rational, _ringformula
+from ._eta import check_eta, check_number
 from .motion import Motions, motions as solve_motions
 from .coupling_network import Network, network as make_network
 from .power import coupling_powers, mesh_flows, mesh_power_ratio
 from .statics import Actions, actions as solve_actions, viscous_torque
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["efficiency", "Efficiency", "MeshResult", "GLOVER", "eta_symbol"]
 
@@ -187,6 +189,7 @@ def _lookup(spec, key_pair, coupling, driver, driven, default):
     return default
 
 
+@takes_mechanism
 def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=None, bearings=None, viscous=None,
                torque=1, speed=1, symbolic=False, held=(), joined=(), check: bool = True, radii=None,
                mode: str = "auto", axes=None, pitch_points=None, chords=None, layout=None,
@@ -213,10 +216,12 @@ def efficiency(mech, ground=None, input=None, output=None, *, eta=None, zeta=Non
         case of the turning conditions).
     """
     exact = bool(symbolic) or radii is not None
+    torque, speed = check_number(torque, "torque", exact=exact), check_number(speed, "speed", exact=exact)
     net = make_network(mech, ground, input, output, held=held, joined=joined, bearings=list(bearings or {}),
                        viscous=list(viscous or {}), chords=chords, layout=layout, mode=mode, exact=exact,
                        radii=radii, axes=axes, pitch_points=pitch_points)
     values = dict(net.layout.values)
+    check_eta(mech, eta, symbolic=symbolic is True, names=[c.name for c in net.meshes])
     if exact:
         torque, speed = sympy.sympify(torque), sympy.sympify(speed)
     if _num(torque * speed, values) <= 0:

@@ -15,6 +15,7 @@ from ..mechanism.data import Mechanism
 from ..mechanism.plot import _axes
 from ..mechanism.widgets import Explorer
 from .overall import efficiency
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["EfficiencyExplorer", "efficiency_explorer", "with_teeth", "plot_efficiency_sweep"]
 
@@ -103,6 +104,7 @@ class EfficiencyExplorer(Explorer):
         return self._slider_rows(w, sliders)
 
 
+@takes_mechanism
 def efficiency_explorer(mech: Mechanism, ground, input, output, *, pairs=None, eta=0.98,
                         max_teeth: int = 120) -> EfficiencyExplorer:
     """A widget: sliders for the tooth numbers of *pairs* (default all) and the ordinary
@@ -111,6 +113,7 @@ def efficiency_explorer(mech: Mechanism, ground, input, output, *, pairs=None, e
     return EfficiencyExplorer(mech, ground, input, output, pairs=pairs, eta=eta, max_teeth=max_teeth)
 
 
+@takes_mechanism
 def plot_efficiency_sweep(mech, ground, input, output, *, pair, gear, values, etas=(0.97, 0.98, 0.99), ax=None,
                           mark=None):
     """Efficiency against the tooth number of *gear* in gear *pair*, for every ordinary

@@ -35,6 +35,7 @@ import sympy
 from ..errors import MechanismError
 from ..mechanism.data import Mechanism
 from ..mechanism.kinematics import Solution, speeds
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["LeverSet", "LeverNode", "Lever", "LeverDiagram", "lever_diagram"]
 
@@ -240,6 +241,7 @@ def _roles(mech, lever_sets) -> dict:
     return {link: "/".join(r) for link, r in roles.items()}
 
 
+@takes_mechanism
 def lever_diagram(mech: Mechanism) -> LeverDiagram:
     """The lever diagram of *mech*'s planetary sets: one lever per set, sets that share two members
     combined (see the module docstring).

@@ -30,6 +30,7 @@ KU2 (K4-1S) fired by theta_1,5 (2-link chain from KU1)
 from __future__ import annotations
 
 from collections import defaultdict, deque
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
 from .._common.nogc import no_gc
@@ -37,6 +38,7 @@ from ..errors import ConstraintError, InputError
 from ..mechanism.data import Mechanism
 from ..units.unit import KinematicUnit
 from ..units.fractionation import kinematic_units
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["Step", "Plan", "plan", "parse_relative"]
 
@@ -185,16 +187,17 @@ class Plan:
         return out
 
 
-def parse_relative(mech: Mechanism, x, ref):
+def parse_relative(mech: Mechanism, x, ref, what: str = "link"):
     """A link id or a relative pair (``(u, v)`` or ``"u/v"``) as a resolved pair ``(u, v)``."""
     if isinstance(x, str) and "/" in x:
         x = tuple(x.split("/", 1))
     if isinstance(x, (tuple, list)) and len(x) == 2:
-        return mech.resolve(x[0], "link"), mech.resolve(x[1], "link")
-    return mech.resolve(x, "link"), ref
+        return mech.resolve(x[0], what), mech.resolve(x[1], what)
+    return mech.resolve(x, what), ref
 
 
 @no_gc
+@takes_mechanism
 def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joined=()) -> Plan:
     """The propagation plan (see the module documentation).
 
@@ -211,17 +214,21 @@ def plan(mech: Mechanism, ground=None, inputs=(), output=None, *, held=(), joine
     if ground is None:
         raise InputError(f"choose a ground link for {mech.name!r} (ground=...); links are {list(mech.link_ids)}")
     ground = mech.resolve(ground, "ground")
+    if inputs is None:
+        inputs = mech.inputs
     if isinstance(inputs, (int, str)):
         inputs = [inputs]
-    ins = tuple(parse_relative(mech, x, ground) for x in inputs)
+    elif isinstance(inputs, Mapping):
+        inputs = list(inputs)  # {link: speed}: the links (propagation finds ratios, not speeds)
+    ins = tuple(parse_relative(mech, x, ground, "input") for x in inputs)
     for u, v in ins:
         if u == v == ground:
             raise InputError(f"input link {u} is the ground; drive another link")
         if u == v:
             raise InputError(f"input {u}/{v} drives a link relative to itself; choose two different links")
-    out = None if output is None else parse_relative(mech, output, ground)
-    held = tuple(mech.resolve(h, "held link") for h in held)
-    joined = tuple((mech.resolve(a, "joined link"), mech.resolve(b, "joined link")) for a, b in joined)
+    out = None if output is None else parse_relative(mech, output, ground, "output")
+    held = mech.resolve_links(held, "held link")
+    joined = mech.resolve_pairs(joined, "joined link")
     frac = kinematic_units(mech)
     units = frac.units
     units_of = defaultdict(list)

@@ -28,6 +28,7 @@ from .._common.parse import to_fraction
 from ..errors import InputError
 from ..mechanism.data import Mechanism
 from .propagation import Plan, plan, theta
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["Propagation", "propagate", "unit_ratio", "METHODS"]
 
@@ -226,6 +227,7 @@ def _simplify_number(v):
     return f if f is not None else v
 
 
+@takes_mechanism
 def propagate(mech: Mechanism, output, inputs=None, *, ground=None, held=(), joined=()) -> Propagation:
     """The global relation from inputs to output, unit by unit (Liu, Chen and Chang, Sec. 4).
 
@@ -251,6 +253,7 @@ def propagate(mech: Mechanism, output, inputs=None, *, ground=None, held=(), joi
     return prop
 
 
+@takes_mechanism
 def unit_ratio(mech: Mechanism, output, input, *, ground=None, held=(), joined=(), method: str = "exact"):
     """``theta_out / theta_in`` of a one-dof mechanism by unit-by-unit propagation: the same
     answer as :func:`gearlib.ratio`, found without solving the whole linear system.

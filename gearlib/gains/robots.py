@@ -47,6 +47,7 @@ from . import _robot_units
 from ._robot_units import _identify, _unit_gain, unit_gains
 from ..errors import InputError, MechanismError
 from ..mechanism.data import Mechanism
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["GearedRobot", "TransmissionLine", "RobotUnit", "geared_robot", "canonical_spanning_tree",
            "UNIT_TYPES", "unit_gains"]
@@ -199,6 +200,7 @@ class GearedRobot:
         return self.structure_matrix(method) * sympy.Matrix(list(xi))
 
 
+@takes_mechanism
 def geared_robot(mech: Mechanism, *, base=None, end_effector=None, inputs=None) -> GearedRobot:
     """Decompose a geared robot manipulator (see the module documentation).
 

@@ -36,6 +36,8 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from .._common.parse import shown
+from ..errors import InputError
 from ..units.unit import KinematicUnit
 
 __all__ = ["RuleDerivation", "RuleMatch", "derive_rule", "match_rule", "RULES"]
@@ -96,8 +98,8 @@ def _solve_ratio(equations, unknowns, output):
 
 def derive_rule(n: int) -> RuleDerivation:
     """Derive rule *n* (1-5) in sympy; see the module documentation."""
-    if n not in RULES:
-        raise ValueError(f"rules are numbered 1 to 5, got {n!r}")
+    if isinstance(n, bool) or not isinstance(n, int) or n not in RULES:
+        raise InputError(f"derive_rule: Liu and Chen's rules are numbered 1 to 5, got {shown(n)}")
     from ..units.catalogue import ku_catalogue
 
     name, template, gears = RULES[n]

@@ -41,6 +41,7 @@ from ..errors import ConstraintError, GearlibError, InputError
 from ..mechanism.assembly import check_assembly
 from ..mechanism.data import Mechanism
 from ..mechanism.kinematics import speeds
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["GearResult", "MeshPower", "Combination", "ScheduleTable", "schedule_table", "classify", "KINDS"]
 
@@ -337,6 +338,7 @@ class ScheduleTable:
         return plot_shift_table(self, ax=ax, **kwargs)
 
 
+@takes_mechanism
 def schedule_table(mech: Mechanism, *, eta=None, k=None, efficiency: bool = True, ground=None, input=None,
                    output=None) -> ScheduleTable:
     """The shift table of *mech*'s schedule (see the module documentation).

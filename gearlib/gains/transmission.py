@@ -26,6 +26,7 @@ from ..errors import DataFormatError
 from .relation import Propagation, propagate
 from ..mechanism.kinematics import format_value
 from ..mechanism.data import Mechanism
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["OperatingMode", "ModeResult", "ShiftTable", "operating_modes", "shift_table", "plot_mode_sweep",
            "LIU_CHEN_MODES"]
@@ -152,6 +153,7 @@ class ShiftTable:
                 f"<th>ratio (null space)</th><th>agree</th></tr>{body}</table>")
 
 
+@takes_mechanism
 def shift_table(mech: Mechanism, modes=None, **options):
     """The shift table of a transmission.
 
@@ -169,6 +171,10 @@ def shift_table(mech: Mechanism, modes=None, **options):
     if modes is None:
         from .schedule import schedule_table
 
+        unknown = [k for k in options if k not in ("eta", "k", "efficiency", "ground", "input", "output")]
+        if unknown:
+            raise DataFormatError(f"shift_table: unknown option {unknown[0]!r}; the options are eta, k, efficiency, "
+                                  "ground, input, output")
         return schedule_table(mech, **options)
     if options:
         raise DataFormatError(f"shift_table with operating modes takes no options; got {', '.join(options)}")
@@ -179,6 +185,7 @@ def shift_table(mech: Mechanism, modes=None, **options):
     return ShiftTable(mech, tuple(rows))
 
 
+@takes_mechanism
 def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, title=None):
     """Every mode's ratio as the tooth number of one gear varies: the static twin of
     :func:`gearlib.gains.transmission_explorer`. ``pair`` names a gear pair, ``gear``

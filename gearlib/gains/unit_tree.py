@@ -114,6 +114,9 @@ def unit_speeds(unit: KinematicUnit, mode: str = "exact") -> dict:
 
 
 def _pair(unit: KinematicUnit, p, what: str) -> tuple:
+    if not isinstance(unit, KinematicUnit):
+        raise InputError(f"unit: expected a kinematic unit, such as gl.kinematic_units(mech).unit(1); got "
+                         f"{type(unit).__name__}")
     if isinstance(p, str) and "/" in p:
         p = tuple(p.split("/", 1))
     if not isinstance(p, (tuple, list)):

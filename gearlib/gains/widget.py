@@ -9,6 +9,7 @@ from __future__ import annotations
 from ..mechanism.data import Mechanism
 from ..mechanism.widgets import Explorer
 from ..units.widget import _graph_canvas
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ['TransmissionExplorer', 'transmission_explorer']
 
@@ -83,6 +84,7 @@ class TransmissionExplorer(Explorer):
         return [pick, *self._slider_rows(w, sliders, per_row=3)]
 
 
+@takes_mechanism
 def transmission_explorer(mech: Mechanism, modes, *, pairs=None, max_teeth: int = 120) -> TransmissionExplorer:
     """A widget: choose a gear and tooth numbers, see the propagation path and the ratio.
     Static twin: :func:`gearlib.gains.plot_mode_sweep`."""

@@ -38,6 +38,7 @@ import warnings
 from dataclasses import dataclass
 
 from ..errors import AssemblyWarning
+from .data import requires_mechanism
 
 __all__ = ["PlanetarySet", "AssemblyCondition", "planetary_sets", "assembly_conditions", "check_assembly"]
 
@@ -95,6 +96,7 @@ def _shift(gp, gear) -> float:
     return 0.0 if gp.profile_shift is None else gp.profile_shift[gp.gears.index(gear)]
 
 
+@requires_mechanism
 def planetary_sets(mech) -> tuple:
     """Every planetary set of *mech* (see the module documentation); bevel pairs and pairs given
     by a ratio without teeth are left out.
@@ -199,6 +201,7 @@ def _fmt(x: float) -> str:
 
 
 # ----------------------------------------------------------------------------- conditions
+@requires_mechanism
 def assembly_conditions(mech) -> tuple:
     """Every assembly condition of every planetary set of *mech* (:class:`AssemblyCondition`):
     concentricity (or the pinion triangle of a double-planet set), and, with more than one

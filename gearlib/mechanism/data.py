@@ -32,11 +32,13 @@ Every check runs when the object is built, so a :class:`Mechanism` that exists i
 
 from __future__ import annotations
 import dataclasses
+import functools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 import sympy
-from .._common.parse import parse_link_id, parse_real, parse_teeth
+from .._common.parse import hashable as _hashable, iterable as _iterable, parse_link_id, parse_real, parse_teeth
+from .._common.parse import shown as _short
 from .._common.topology import CoaxialGroups, UnionFind, components
 from ..errors import (
     AxisError,
@@ -146,7 +148,8 @@ class Mechanism:
 
         comps = components(ids, [tp.links for tp in tps] + [gp.gears for gp in gps])
         if len(comps) > 1:
-            pieces = "; ".join("{" + _fmt(c) + "}" for c in comps)
+            pieces = "; ".join("{" + _fmt(c[:10]) + (", ..." if len(c) > 10 else "") + "}" for c in comps[:5])
+            pieces += "; ..." if len(comps) > 5 else ""
             raise DisconnectedError(
                 f"mechanism {self.name!r} falls apart into {len(comps)} pieces: {pieces}. "
                 "Join them with a turning pair or a gear pair, or describe them separately."
@@ -352,7 +355,7 @@ class Mechanism:
             links=data["links"],
             turning_pairs=tuple(data.get("turning_pairs") or ()),
             gear_pairs=tuple(data.get("gear_pairs") or ()),
-            name=str(data.get("name") or "mechanism"),
+            name=_text(data.get("name"), "mechanism", "name") or "mechanism",
             description=data.get("description"),
             source=data.get("source"),
             ground=data.get("ground"),
@@ -424,9 +427,17 @@ class Mechanism:
         return self.links[self.index[key]]
 
     def resolve(self, link_id, what: str = "link"):
-        """Normalise a link id given by a user; raise :class:`UnknownLinkError` if there is none."""
+        """Normalise a link id given by a user; raise :class:`UnknownLinkError` if there is none,
+        and :class:`DataFormatError` for something that is not one id (a list, True, a mapping)."""
         if type(link_id) in (int, str) and link_id in self.index:  # the common case, fast
             return link_id
+        if isinstance(link_id, float) and link_id.is_integer():
+            link_id = int(link_id)  # 3.0 from a computation is link 3
+        if isinstance(link_id, bool) or not _hashable(link_id) or isinstance(link_id, float):
+            kind = "True/False" if isinstance(link_id, bool) else f"a {type(link_id).__name__}"
+            raise DataFormatError(
+                f"{what}: expected one link id such as {self.link_ids[0]!r}, got {kind} ({_short(link_id)}); "
+                f"links are {_fmt(self.link_ids[:20])}{', ...' if len(self.links) > 20 else ''}")
         try:
             key = parse_link_id(link_id, what)
         except DataFormatError:
@@ -436,7 +447,37 @@ class Mechanism:
         for lk in self.links:  # a link may also be named by its name
             if lk.name is not None and lk.name == link_id:
                 return lk.id
-        raise UnknownLinkError(f"{what} {link_id!r} is not a link of {self.name!r}; links are {_fmt(self.link_ids)}")
+        more = ", ..." if len(self.links) > 20 else ""
+        raise UnknownLinkError(
+            f"{what} {_short(link_id)} is not a link of {self.name!r}; links are {_fmt(self.link_ids[:20])}{more}")
+
+    def resolve_links(self, links, what: str = "link") -> tuple:
+        """Links given by a user as one id or a list of ids (``held=4`` and ``held=[4]`` alike;
+        text is one id, so ``held="14"`` is link 14, never links 1 and 4)."""
+        if links is None:
+            return ()
+        if isinstance(links, (str, int, float)) or not _iterable(links):
+            return (self.resolve(links, what),)
+        if isinstance(links, Mapping):
+            raise DataFormatError(f"{what}: expected a list of links such as [1, 4], got a mapping ({_short(links)})")
+        return tuple(self.resolve(x, what) for x in links)
+
+    def resolve_pairs(self, pairs, what: str = "joined links") -> tuple:
+        """Pairs of links given by a user: ``[(2, 5), (1, 3)]``, or one pair ``(2, 5)``."""
+        if pairs is None:
+            return ()
+        if isinstance(pairs, (str, bytes, Mapping)) or not _iterable(pairs):
+            raise DataFormatError(f"{what}: expected pairs of links such as [(2, 5)], got {_short(pairs)}")
+        pairs = list(pairs)
+        if len(pairs) == 2 and not any(_iterable(x) and not isinstance(x, str) for x in pairs):
+            pairs = [pairs]  # one pair (u, v)
+        out = []
+        for pair in pairs:
+            if isinstance(pair, (str, bytes, Mapping)) or not _iterable(pair) or len(list(pair)) != 2:
+                raise DataFormatError(f"{what}: expected a pair of links (u, v), got {_short(pair)}")
+            u, v = (self.resolve(x, what) for x in pair)
+            out.append((u, v))
+        return tuple(out)
 
     def gear_pair(self, a, b) -> tuple[GearPair, int]:
         """The gear pair between gears *a* and *b*, and +1 or -1 for its orientation."""
@@ -509,3 +550,32 @@ class Mechanism:
             f"<Mechanism {self.name!r}: {len(self.links)} links, {len(self.turning_pairs)} turning pairs, "
             f"{len(self.gear_pairs)} gear pairs>"
         )
+
+
+def not_a_mechanism(obj, what: str = "mech") -> DataFormatError:
+    """The error for an argument that should have been a :class:`Mechanism`."""
+    if isinstance(obj, str):
+        hint = f" (for a catalogue entry: gl.catalog.load({_short(obj)}); for a file: gl.load(path))"
+    elif isinstance(obj, Mapping):
+        hint = " (build it with gl.Mechanism.from_dict(data))"
+    else:
+        hint = ""
+    got = _short(obj) if obj is None or isinstance(obj, (bool, int, float, str)) else f"a {type(obj).__name__}"
+    return DataFormatError(
+        f"{what}: expected a Mechanism (gl.load('file.yaml'), gl.catalog.load('name')) or a catalogue name; "
+        f"got {got}{hint}")
+
+
+def requires_mechanism(fn):
+    """Decorator: the function's first parameter must be a :class:`Mechanism` (for the modules
+    below the file reader; the others accept a catalogue name too, see ``mechanism._accept``)."""
+    name = fn.__code__.co_varnames[0]
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        obj = args[0] if args else kwargs.get(name)
+        if not isinstance(obj, Mechanism):
+            raise not_a_mechanism(obj, name)
+        return fn(*args, **kwargs)
+
+    return wrapper

@@ -20,6 +20,9 @@ from fractions import Fraction
 
 import sympy
 
+from .._common.parse import parse_count, shown
+from ..errors import DataFormatError
+
 __all__ = ["Number", "number"]
 
 
@@ -28,7 +31,12 @@ class Number:
 
     def __init__(self, value, digits: int = 6):
         self.value = value
-        self.digits = digits
+        self.digits = parse_count(digits, "number: digits", 1, 17)
+        try:
+            self._parts()
+        except (TypeError, ValueError, OverflowError):
+            raise DataFormatError(f"number: expected a number (int, float, complex, Fraction or a sympy number) "
+                                  f"within a float's range, got {shown(value)}") from None
 
     def _parts(self):
         v = self.value

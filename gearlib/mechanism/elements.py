@@ -85,7 +85,7 @@ class Link:
     def __post_init__(self):
         object.__setattr__(self, "id", parse_link_id(self.id, "link"))
         if self.name is not None and not isinstance(self.name, str):
-            object.__setattr__(self, "name", str(self.name))
+            object.__setattr__(self, "name", _text(self.name, f"link {self.id}", "name"))
 
     @property
     def label(self) -> str:

@@ -24,14 +24,19 @@ from dataclasses import dataclass
 
 import sympy
 
+from .._common.parse import parse_link_id
 from .elements import GearPair
 from .data import Mechanism
+from ._accept import takes_mechanism
 
 __all__ = ["omega", "WillisEquation", "willis_equations", "willis_matrix", "ratio_symbols"]
 
 
 def omega(link, relative_to=None) -> sympy.Symbol:
     """The symbol ``omega_u`` (speed of link *u*), or ``omega_u_v`` (of *u* relative to *v*)."""
+    for x, what in ((link, "link"), (relative_to, "relative_to")):
+        if x is not None or what == "link":
+            parse_link_id(x, f"omega: {what}")
     return sympy.Symbol(f"omega_{link}" if relative_to is None else f"omega_{link}_{relative_to}")
 
 
@@ -63,6 +68,7 @@ class WillisEquation:
         return f"{self.lhs} = {self.rhs}"
 
 
+@takes_mechanism
 def ratio_symbols(mech: Mechanism) -> dict:
     """``{e_a_b symbol: exact ratio}`` for every pair whose ratio is a number."""
     return {gp.symbol: gp.e for gp in mech.gear_pairs if not gp.e.free_symbols}
@@ -74,6 +80,7 @@ def _ratio(gp: GearPair, symbolic: bool):
     return gp.e
 
 
+@takes_mechanism
 def willis_equations(mech: Mechanism, *, symbolic: bool = True) -> list[WillisEquation]:
     """One :class:`WillisEquation` per gear pair.
 
@@ -90,6 +97,7 @@ def willis_equations(mech: Mechanism, *, symbolic: bool = True) -> list[WillisEq
     return out
 
 
+@takes_mechanism
 def willis_matrix(mech: Mechanism, *, symbolic: bool = True, ground=None) -> sympy.Matrix:
     """The coefficient matrix of the Willis equations, one row per gear pair.
 
@@ -108,5 +116,5 @@ def willis_matrix(mech: Mechanism, *, symbolic: bool = True, ground=None) -> sym
         rows.append(row)
     matrix = sympy.Matrix(rows) if rows else sympy.zeros(0, len(cols))
     if ground is not None:
-        matrix.col_del(mech.index[mech.resolve(ground)])
+        matrix.col_del(mech.index[mech.resolve(ground, "ground")])
     return matrix

@@ -18,7 +18,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._common.parse import MAX_TEETH, iterable, parse_count, parse_probability, parse_teeth, shown
+from ..errors import DataFormatError, InputError
 from .data import Mechanism
+
+MAX_LINKS = 200_000
+"""The largest mechanism the generators build (a 100,000-link train takes seconds to analyse)."""
 
 __all__ = ["random_mechanism", "serial_train"]
 
@@ -35,9 +40,18 @@ def random_mechanism(n_links: int, dof: int = 1, *, rng=None, bevel: float = 0.0
     bevel : probability that a gear pair is a bevel pair with complex (Penaud) weights.
     internal : probability that a spur pair is internal.
     """
-    rng = np.random.default_rng(rng)
-    if n_links < dof + 1 or dof < 1:
-        raise ValueError(f"need n_links >= dof + 1 >= 2, got n_links={n_links}, dof={dof}")
+    dof = parse_count(dof, "random_mechanism: dof", 1, MAX_LINKS - 1)
+    n_links = parse_count(n_links, "random_mechanism: n_links", dof + 1, MAX_LINKS)
+    bevel, internal = parse_probability(bevel, "random_mechanism: bevel"), \
+        parse_probability(internal, "random_mechanism: internal")
+    max_teeth = parse_count(max_teeth, "random_mechanism: max_teeth", 12, MAX_TEETH)
+    if name is not None and not isinstance(name, str):
+        raise DataFormatError(f"random_mechanism: name must be text, got {shown(name)}")
+    try:
+        rng = np.random.default_rng(rng)
+    except (TypeError, ValueError):
+        raise DataFormatError(f"random_mechanism: rng must be a seed (a whole number), a numpy Generator or None; "
+                              f"got {shown(rng)}") from None
     axes_of: dict[int, list[str]] = {0: ["a"]}  # axis labels on each link
     group: dict[tuple[str, int], int] = {("a", 0): 0}  # (label, link) -> coaxial group id
     members: dict[int, list[int]] = {0: [0]}
@@ -87,7 +101,7 @@ def random_mechanism(n_links: int, dof: int = 1, *, rng=None, bevel: float = 0.0
                 break
         if choice is None:  # fall back to a free carrier-like link on the ground
             if free_left <= 0:
-                raise RuntimeError("random_mechanism: no place to add a gear; try another seed")
+                raise InputError("random_mechanism: no place to add a gear; try another seed")
             choice, free = (0, next(labels), None), True
         parent, label, option = choice
         attach(link, parent, label)
@@ -104,7 +118,7 @@ def random_mechanism(n_links: int, dof: int = 1, *, rng=None, bevel: float = 0.0
             pair["type"] = "internal"
         gears.append(pair)
     if free_left > 0:
-        raise ValueError(f"could not reach dof={dof} with {n_links} links")
+        raise InputError(f"random_mechanism: could not reach dof={dof} with {n_links} links; try another seed")
     data = {
         "name": name or f"random {n_links}-link {dof}-dof mechanism",
         "links": list(range(n_links)),
@@ -121,7 +135,10 @@ def serial_train(n_pairs: int, *, teeth=(20, 40), name: str | None = None) -> Me
     Link ``k`` meshes with link ``k + 1``; every shaft turns on the frame about its own axis.
     The ratio from link 1 to link ``n_pairs + 1`` is ``(-teeth[0]/teeth[1]) ** n_pairs``.
     """
-    a, b = teeth
+    n_pairs = parse_count(n_pairs, "serial_train: n_pairs", 1, MAX_LINKS - 2)
+    if isinstance(teeth, (str, bytes)) or not iterable(teeth) or len(list(teeth)) != 2:
+        raise DataFormatError(f"serial_train: teeth must be two tooth numbers (driver, driven), got {shown(teeth)}")
+    a, b = (parse_teeth(t, "serial_train: teeth") for t in teeth)
     turning = [[0, k, f"s{k}"] for k in range(1, n_pairs + 2)]
     gears = [{"gears": [k, k + 1], "teeth": [a, b], "carrier": 0} for k in range(1, n_pairs + 1)]
     return Mechanism.from_dict({

@@ -22,10 +22,12 @@ import networkx as nx
 
 from .elements import GearPair
 from .data import Mechanism
+from ._accept import takes_mechanism
 
 __all__ = ["to_networkx", "FundamentalCircuit", "fundamental_circuits", "displacement_graph"]
 
 
+@takes_mechanism
 def to_networkx(mech: Mechanism) -> nx.MultiGraph:
     """A networkx multigraph: nodes are link ids (attribute ``name``); edges have
     ``kind`` ``"thin"`` (with ``axis``) or ``"heavy"`` (with ``carrier`` and ``pair``)."""
@@ -63,6 +65,7 @@ class FundamentalCircuit:
         return f"({a},{b})({self.pair.carrier})"
 
 
+@takes_mechanism
 def fundamental_circuits(mech: Mechanism) -> list[FundamentalCircuit]:
     """One fundamental circuit per gear pair, in the order of ``mech.gear_pairs``."""
     out = []
@@ -72,6 +75,7 @@ def fundamental_circuits(mech: Mechanism) -> list[FundamentalCircuit]:
     return out
 
 
+@takes_mechanism
 def displacement_graph(mech: Mechanism) -> nx.MultiGraph:
     """The displacement graph: gear vertices joined by heavy edges labelled by their carrier
     (step 1 of the kinematic fractionation of Liu, Chen and Chang)."""

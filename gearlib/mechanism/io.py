@@ -11,13 +11,15 @@ True
 from __future__ import annotations
 
 import json
+import os
 import pathlib
 
 import yaml
 
+from .._common.files import parse_text, read_text
 from ..errors import FileFormatError, MechanismError
 from .assembly import check_assembly
-from .data import Mechanism
+from .data import Mechanism, not_a_mechanism
 
 __all__ = ["load", "save", "loads"]
 
@@ -26,15 +28,19 @@ def loads(text: str, *, where: str = "<text>") -> Mechanism:
     """Parse a mechanism from YAML (or JSON, which is valid YAML) text. A planetary set that
     cannot be assembled as given is reported with a :class:`gearlib.AssemblyWarning`
     (:func:`gearlib.assembly_conditions`), not refused."""
+    if isinstance(text, (bytes, bytearray)):
+        try:
+            text = bytes(text).decode("utf-8-sig")
+        except UnicodeDecodeError:
+            raise FileFormatError(f"{where}: not UTF-8 text (expected YAML or JSON)") from None
+    if not isinstance(text, str):
+        hint = " (it is already a Mechanism)" if isinstance(text, Mechanism) else \
+            " (for a file name use gl.load(path))" if isinstance(text, pathlib.PurePath) else ""
+        raise FileFormatError(f"{where}: expected the text of a mechanism (YAML or JSON), got "
+                              f"{'None' if text is None else type(text).__name__}{hint}")
     if not text.strip():
         raise FileFormatError(f"{where}: the file is empty; it should describe a mechanism (links, gear_pairs, ...)")
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as err:
-        mark = getattr(err, "problem_mark", None)
-        at = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        problem = getattr(err, "problem", None) or "invalid syntax"
-        raise FileFormatError(f"{where}: not valid YAML or JSON{at}: {problem}") from None
+    data = parse_text(text, where)
     if not isinstance(data, dict):
         raise FileFormatError(
             f"{where}: the top level must be a mapping with `links`, `turning_pairs`, `gear_pairs`; "
@@ -44,33 +50,36 @@ def loads(text: str, *, where: str = "<text>") -> Mechanism:
         mech = Mechanism.from_dict(data)
     except MechanismError as err:
         raise type(err)(f"{where}: {err}") from None
+    except RecursionError:
+        raise FileFormatError(f"{where}: nested too deeply to be a mechanism") from None
     check_assembly(mech, where=where, stacklevel=3)
     return mech
 
 
 def load(path) -> Mechanism:
     """Read a mechanism from a ``.yaml``, ``.yml`` or ``.json`` file."""
-    path = pathlib.Path(path)
-    if not path.exists():
-        raise FileFormatError(f"{path}: no such file")
-    if path.is_dir():
-        raise FileFormatError(f"{path}: is a directory, not a mechanism file")
-    try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError:
-        raise FileFormatError(f"{path}: not a text file (expected YAML or JSON)") from None
+    if isinstance(path, Mechanism):
+        raise FileFormatError("gl.load: this is already a Mechanism; gl.load reads a file name")
+    path, text = read_text(path, "mechanism file")
     return loads(text, where=str(path))
 
 
 def save(mech: Mechanism, path) -> None:
     """Write *mech* to *path*; JSON when the name ends in ``.json``, else YAML."""
+    if not isinstance(mech, Mechanism):
+        raise not_a_mechanism(mech)
+    if path is None or isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
+        raise FileFormatError(f"gl.save: expected a file name (a str or pathlib.Path), got {type(path).__name__}")
     path = pathlib.Path(path)
     data = mech.to_dict()
     if path.suffix.lower() == ".json":
         text = json.dumps(_jsonable(data), indent=2) + "\n"
     else:
         text = yaml.safe_dump(data, sort_keys=False, allow_unicode=True)
-    path.write_text(text, encoding="utf-8")
+    try:
+        path.write_text(text, encoding="utf-8")
+    except OSError as err:
+        raise FileFormatError(f"{path}: cannot be written ({err.strerror})") from None
 
 
 def _jsonable(data):

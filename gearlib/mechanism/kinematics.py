@@ -33,6 +33,8 @@ Fraction(2, 7)
 
 from __future__ import annotations
 
+import sys
+
 import cmath
 import warnings
 from collections.abc import Mapping, Sequence
@@ -47,6 +49,7 @@ from .._common.parse import parse_expr, to_fraction
 from .equations import omega
 from ..errors import ConstraintError, DataFormatError, InputError
 from .data import Mechanism
+from ._accept import takes_mechanism
 
 __all__ = ["Solution", "speeds", "ratio", "METHODS", "Constraints", "format_value"]
 
@@ -74,15 +77,12 @@ class Constraints:
         if ground is None:
             raise InputError(f"choose a ground link for {mech.name!r} (ground=...); links are {list(mech.link_ids)}")
         ground = mech.resolve(ground, "ground")
-        held = tuple(mech.resolve(h, "held link") for h in held) if held else ()
+        held = mech.resolve_links(held, "held link")
         for h in held:
             if h == ground:
                 raise ConstraintError(f"link {h} is the ground and also held; the ground is already fixed")
         joined_out = []
-        for pair in joined if joined else ():
-            if isinstance(pair, (str, bytes)) or not isinstance(pair, Sequence) or len(pair) != 2:
-                raise DataFormatError(f"joined links must be pairs (u, v), got {pair!r}")
-            u, v = (mech.resolve(x, "joined link") for x in pair)
+        for u, v in mech.resolve_pairs(joined, "joined link"):
             if u == v:
                 raise ConstraintError(f"joined pair ({u}, {v}) joins a link to itself")
             joined_out.append((u, v))
@@ -167,7 +167,11 @@ class Constraints:
 
 
 def _finite(x) -> bool:
-    return x == x and x not in (float("inf"), float("-inf"))
+    """A number that fits a float: not NaN, not infinite, not an integer beyond 1.8e308."""
+    return -_FLOAT_MAX <= x <= _FLOAT_MAX
+
+
+_FLOAT_MAX = sys.float_info.max
 
 
 def _as_fraction(v):
@@ -695,6 +699,7 @@ def _clean(x) -> list:
 _SOLVERS = {"exact": _exact, "symbolic": _symbolic, "nullspace": _nullspace, "numeric": _numeric}
 
 
+@takes_mechanism
 def speeds(mech: Mechanism, ground=None, inputs=None, *, method: str = "exact", held=(), joined=()) -> Solution:
     """Every link's speed relative to the ground, for given input speeds.
 
@@ -753,6 +758,7 @@ def speeds(mech: Mechanism, ground=None, inputs=None, *, method: str = "exact", 
     return Solution(mech, cons, tuple(values), method, dof)
 
 
+@takes_mechanism
 def ratio(mech: Mechanism, output, input, *, ground=None, relative_to=None, method: str = "exact",
           held=(), joined=()):
     """The speed ratio ``omega(output/ref) / omega(input/ref)`` of a one-dof mechanism.
@@ -771,15 +777,17 @@ def ratio(mech: Mechanism, output, input, *, ground=None, relative_to=None, meth
         ground = mech.ground
     ref = ground if relative_to is None else relative_to
 
-    def split(x):
+    def split(x, what):
         if isinstance(x, str) and "/" in x:
-            return tuple(x.split("/", 1))
-        if isinstance(x, tuple) and len(x) == 2:
-            return x
-        return (x, ref)
+            u, v = x.split("/", 1)
+        elif isinstance(x, (tuple, list)) and len(x) == 2:
+            u, v = x
+        else:
+            return (mech.resolve(x, what), ref)
+        return (mech.resolve(u, what), mech.resolve(v, f"{what} reference"))
 
-    inp = split(input)
-    out = split(output)
+    inp = split(input, "input")
+    out = split(output, "output")
     sol = speeds(mech, ground, {inp: 1}, method=method, held=held, joined=joined)
     value = sol.relative(*out)
     if method == "symbolic":

@@ -27,6 +27,7 @@ from fractions import Fraction
 from .._common import linalg as _linalg
 from .._common.parse import to_fraction
 from .data import Mechanism
+from ._accept import takes_mechanism
 
 __all__ = ["Mobility", "dof", "redundant_gear_pairs", "choose_inputs"]
 
@@ -110,6 +111,7 @@ def _null_basis(ech: _linalg.Echelon, n: int) -> list[list]:
     return basis
 
 
+@takes_mechanism
 def redundant_gear_pairs(mech: Mechanism) -> tuple:
     """Gear pairs whose Willis equation follows from the pairs before them (for the actual,
     numeric ratios): a duplicate planet, for example. Empty for symbolic ratios."""
@@ -119,14 +121,18 @@ def redundant_gear_pairs(mech: Mechanism) -> tuple:
     return tuple(gp for gp in ech.dependent if gp is not None)
 
 
+@takes_mechanism
 def dof(mech: Mechanism, ground=None, *, held=(), joined=()) -> Mobility:
     """Degrees of freedom of *mech* with one link (``ground``) held, and held/joined links."""
     m, jr, jg = len(mech.links), len(mech.turning_pairs), len(mech.gear_pairs)
     ix = mech.index
-    ground = mech.resolve(ground if ground is not None else (mech.ground if mech.ground is not None else mech.link_ids[0]))
+    ground = mech.resolve(ground if ground is not None else (mech.ground if mech.ground is not None else mech.link_ids[0]),
+                          "ground")
     extra = [{ix[ground]: Fraction(1)}]
-    extra += [{ix[mech.resolve(h)]: Fraction(1)} for h in held]
-    extra += [{ix[mech.resolve(u)]: Fraction(1), ix[mech.resolve(v)]: Fraction(-1)} for u, v in joined]
+    held = mech.resolve_links(held, "held link")
+    joined = mech.resolve_pairs(joined, "joined link")
+    extra += [{ix[h]: Fraction(1)} for h in held]
+    extra += [{ix[u]: Fraction(1), ix[v]: Fraction(-1)} for u, v in joined]
     ech, rank_w = _rank_and_basis(mech, extra)
     rank_dof = m - ech.rank
     redundant_gp = tuple(gp for gp in ech.dependent if gp is not None)
@@ -173,6 +179,7 @@ def dof(mech: Mechanism, ground=None, *, held=(), joined=()) -> Mobility:
     return Mobility(m, jr, jg, planar, count, rank_dof, red_tp, redundant_gp, locked, tuple(notes))
 
 
+@takes_mechanism
 def choose_inputs(mech: Mechanism, ground=None, *, candidates=None) -> list:
     """Links that can be driven together as independent inputs, as many as the mechanism has
     degrees of freedom: the first ones of *candidates* (default: every link in order) that
@@ -182,13 +189,13 @@ def choose_inputs(mech: Mechanism, ground=None, *, candidates=None) -> list:
     >>> gl.choose_inputs(gl.catalog.car_differential(), ground=1)
     [2, 3]
     """
-    ground = mech.resolve(ground if ground is not None else (mech.ground if mech.ground is not None else mech.link_ids[0]))
+    ground = mech.resolve(ground if ground is not None else (mech.ground if mech.ground is not None else mech.link_ids[0]),
+                          "ground")
     n = dof(mech, ground).rank
     chosen: list = []
-    for link in candidates if candidates is not None else mech.link_ids:
+    for link in mech.resolve_links(candidates, "candidate") if candidates is not None else mech.link_ids:
         if len(chosen) == n:
             break
-        link = mech.resolve(link)
         if link == ground or link in chosen:
             continue
         if dof(mech, ground, held=chosen + [link]).rank == n - len(chosen) - 1:

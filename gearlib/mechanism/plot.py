@@ -15,8 +15,11 @@ import functools
 import math
 import textwrap
 import numpy as np
+from .._common.parse import shown
+from ..errors import DataFormatError
 from .graph import to_networkx
 from .data import Mechanism
+from ._accept import takes_mechanism
 
 __all__ = ['style', 'graph_layout', 'draw_graph', 'plot_speeds', 'plot_ratio_sweep']
 
@@ -41,6 +44,8 @@ def style():
 
 def _axes(ax, figsize=(5.0, 4.0)):
     if ax is not None:
+        if not (hasattr(ax, "add_artist") and hasattr(ax, "figure")):
+            raise DataFormatError(f"ax: expected matplotlib Axes (fig, ax = plt.subplots()) or None, got {shown(ax)}")
         return ax
     import matplotlib.pyplot as plt
 
@@ -73,6 +78,7 @@ def _kamada_kawai(nodes: tuple, edges: tuple) -> tuple:
     return tuple((n, (float(x), float(y))) for n, (x, y) in pos.items())
 
 
+@takes_mechanism
 def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, highlight=(),
                highlight_color="tab:orange", title=None, node_size=420, font_size=10):
     """Draw the graph of *mech*: heavy edges for gear pairs, thin labelled edges for turning pairs.
@@ -148,6 +154,9 @@ def plot_speeds(solution, ax=None, *, links=None, title=None):
     Complex speeds (bevel trains in Penaud's method) are drawn by magnitude, with their
     angle written on the bar.
     """
+    if not hasattr(solution, "as_complex"):
+        hint = " (solve first: gl.speeds(mech, ground=..., inputs={...}))" if isinstance(solution, Mechanism) else ""
+        raise DataFormatError(f"solution: expected the result of gl.speeds(...), got {shown(solution)}{hint}")
     ax = _axes(ax, figsize=(6.0, 3.2))
     mech = solution.mechanism
     links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))

@@ -51,6 +51,7 @@ from dataclasses import dataclass
 
 from ..errors import DataFormatError
 from .data import Mechanism
+from ._accept import as_mechanism, takes_mechanism
 
 __all__ = ["Block", "Line", "AxisLine", "Symbol", "Label", "Sketch", "sketch_layout", "draw_sketch", "figure_size"]
 
@@ -149,6 +150,7 @@ class Sketch:
         return draw_sketch(self, ax=ax, **kw)
 
 
+@takes_mechanism
 def sketch_layout(mech: Mechanism) -> Sketch:
     """The kinematic sketch of *mech* as geometry (nothing is drawn): see the module docstring.
 
@@ -201,6 +203,8 @@ def draw_sketch(mech, ax=None, *, title=None, names=False, font_size=8, colors=T
     from matplotlib.collections import LineCollection, PolyCollection
     from matplotlib.colors import to_rgba
 
+    if not isinstance(mech, Sketch):
+        mech = as_mechanism(mech)
     sk = mech if isinstance(mech, Sketch) else sketch_layout(mech)
     link_names = {lk.id: lk.name for lk in mech.links} if isinstance(mech, Mechanism) else {}
     x0, x1, y0, y1 = sk.bounds()

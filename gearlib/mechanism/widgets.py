@@ -26,6 +26,7 @@ import numpy as np
 from .data import Mechanism
 from .kinematics import speeds
 from .plot import _axes
+from ._accept import takes_mechanism
 
 __all__ = ["Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png", "encode_png",
            "with_snapshot"]
@@ -338,12 +339,14 @@ class SpeedExplorer(Explorer):
                                      for key, value in self.current().items()})
 
 
+@takes_mechanism
 def speed_explorer(mech: Mechanism, ground=None, inputs=None, *, pairs=None, max_teeth: int = 120) -> SpeedExplorer:
     """A widget: tooth-number sliders for ``pairs`` (default: all) and a bar chart of every
     link's speed. Static twin: :func:`plot_speed_sweep`."""
     return SpeedExplorer(mech, ground, inputs, pairs=pairs, max_teeth=max_teeth)
 
 
+@takes_mechanism
 def plot_speed_sweep(mech: Mechanism, ground=None, inputs=None, *, pair, gear, values, links=None, ax=None,
                      title=None):
     """Every link's speed as the tooth number of one gear varies: the static twin of

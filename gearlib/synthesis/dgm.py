@@ -41,6 +41,7 @@ from .atlas import canonical_graph, chain_problems, geared_chains, isomorphic
 from ..mechanism.equations import omega
 from ..errors import DataFormatError, InputError
 from ..mechanism.data import Mechanism
+from ..mechanism._accept import takes_mechanism
 
 __all__ = [
     "adjacency", "circuit_matrix", "terminal_constraint", "TerminalConstraint", "identify",
@@ -52,6 +53,7 @@ def _ratio_symbols(gp) -> frozenset:
     return frozenset(gp.e.free_symbols) if gp.e.free_symbols else frozenset({gp.symbol})
 
 
+@takes_mechanism
 def adjacency(mech: Mechanism) -> dict:
     """``{link: links coaxial with it}``: the links a turning pair could join to each link
     once coaxial links are re-arranged (CYL's "adjacent according to the coaxial conditions").
@@ -301,6 +303,7 @@ class TerminalConstraint:
         return head + ("" if self.admissible else " (" + "; ".join(self.reasons) + ")")
 
 
+@takes_mechanism
 def terminal_constraint(mech: Mechanism, terminals, *, ground) -> TerminalConstraint:
     """Eliminate the non-terminal speeds from the fundamental circuit equations.
 
@@ -373,6 +376,7 @@ class Identification:
                  "redundant": c.redundant, "result": self.result(c)} for c in self.candidates]
 
 
+@takes_mechanism
 def identify(chain: Mechanism, n_terminals: int | None = None, *, grounds=None) -> Identification:
     """Every admissible (ground, terminals) assignment of a non-fractionated chain.
 
@@ -408,7 +412,7 @@ def identify(chain: Mechanism, n_terminals: int | None = None, *, grounds=None) 
     if grounds is None:
         grounds = tuple(x for x in chain.link_ids if len(adj[x]) >= n_terminals)
     else:
-        grounds = tuple(chain.resolve(g, "ground") for g in grounds)
+        grounds = chain.resolve_links(grounds, "ground")
     cands, dups, kept = [], {}, []
     for g in grounds:
         for terms in itertools.combinations(adj[g], n_terminals):

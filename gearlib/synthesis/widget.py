@@ -19,11 +19,16 @@ class DGMExplorer:
     """
 
     def __init__(self, chains, n_terminals: int = 3):
-        chains = [chains] if isinstance(chains, Mechanism) else list(chains)
-        if not chains:
-            from ..errors import InputError
+        from .._common.parse import parse_count
+        from ..errors import InputError
+        from ..mechanism._accept import as_mechanism
 
+        if chains is None or isinstance(chains, (Mechanism, str)):
+            chains = [chains]
+        chains = [as_mechanism(c, "chains") for c in chains]
+        if not chains:
             raise InputError("give at least one chain to explore")
+        n_terminals = parse_count(n_terminals, "n_terminals", 2, 12)
         self.chains = {m.name: m for m in chains}
         self.n_terminals = n_terminals
         first = chains[0]

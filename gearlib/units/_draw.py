@@ -26,7 +26,9 @@ def unit_colors(n: int) -> list:
 
 def _axes(ax, figsize=(5.0, 4.0)):
     if ax is not None:
-        return ax
+        from ..mechanism.plot import _axes as checked
+
+        return checked(ax)
     import matplotlib.pyplot as plt
 
     _, ax = plt.subplots(figsize=figsize)

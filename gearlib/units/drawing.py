@@ -13,6 +13,7 @@ from ..mechanism.data import Mechanism
 from .fractionation import kinematic_units
 from . import _draw
 from ._draw import _axes, _draw_unit_at, _edge, _finish, _node, _unit_layout, draw_unit, unit_colors
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ['draw_unit', 'draw_units', 'unit_colors', 'draw_units_gallery', 'draw_displacement_graph', 'draw_fractionation', 'draw_ku_catalogue']
 
@@ -49,6 +50,7 @@ def draw_units_gallery(names, axes=None, *, font_size=8):
     return axes
 
 
+@takes_mechanism
 def draw_displacement_graph(mech: Mechanism, ax=None, *, pos=None, separated=False, title=None, font_size=10):
     """Step 1 (and, with ``separated=True``, step 2): the gears joined by heavy edges, each
     labelled with its carrier; separated, each unit's piece is drawn on its own."""
@@ -77,6 +79,7 @@ def draw_displacement_graph(mech: Mechanism, ax=None, *, pos=None, separated=Fal
     return _finish(ax, {g: pos[g] for g in gears}, "displacement graph" if title is None else title)
 
 
+@takes_mechanism
 def draw_fractionation(mech: Mechanism, axes=None, *, font_size=9):
     """The four steps of kinematic fractionation side by side: (a) the graph, (b) the
     displacement graph, (c) the separated displacement graph, (d) the units."""

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from .._common.topology import UnionFind
 from ..mechanism.data import Mechanism
 from .fractionation import kinematic_units
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ["FundamentalGearedEntity", "fundamental_geared_entities"]
 
@@ -36,6 +37,7 @@ class FundamentalGearedEntity:
                 f"{', '.join(map(str, self.planets))}, central gears {', '.join(map(str, self.central))}")
 
 
+@takes_mechanism
 def fundamental_geared_entities(mech: Mechanism) -> list[FundamentalGearedEntity]:
     """Chatterjee and Tsai's fundamental geared entities (FGEs), for comparison with units.
 

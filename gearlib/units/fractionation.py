@@ -39,6 +39,7 @@ from .._common.topology import UnionFind
 from ..mechanism.elements import GearPair
 from ..mechanism.data import Mechanism
 from .unit import CommonLinkage, KinematicUnit, _key, _replace, _thin_edges
+from ..mechanism._accept import takes_mechanism
 
 __all__ = ['Fractionation', 'kinematic_units', 'separated_displacement_graph']
 
@@ -212,6 +213,7 @@ def _linkages(mech: Mechanism, units) -> tuple:
 
 
 @no_gc
+@takes_mechanism
 def kinematic_units(mech: Mechanism) -> Fractionation:
     """Fractionate *mech* into kinematic units (steps 1-4), classify each against the catalogue
     of units with up to five links, and find the common linkages between them.

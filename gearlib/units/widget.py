@@ -6,6 +6,7 @@ without a browser. Static twin: :func:`gearlib.units.draw_units_gallery`.
 """
 
 from __future__ import annotations
+from ..errors import UnknownLinkError
 from ..mechanism.widgets import Explorer
 
 __all__ = ['UnitExplorer', 'unit_explorer']
@@ -31,7 +32,15 @@ class UnitExplorer(Explorer):
     html_text = True  # the units are named in their colours
 
     def __init__(self, names=None, *, start=None):
+        from .. import catalog
+
+        if isinstance(names, str):
+            names = [names]
         self.names = list(names) if names is not None else _geared_names()
+        for name in self.names + ([start] if start is not None else []):
+            catalog.path(name)  # a clear error for a name that is not in the catalogue
+        if not self.names:
+            raise UnknownLinkError("unit_explorer: give at least one catalogue name (gl.catalog.names())")
         self.name = start or ("liu_chen_fig1" if "liu_chen_fig1" in self.names else self.names[0])
         self._start()
         self._pos: dict = {}
