@@ -258,8 +258,11 @@ def test_bad_terminals_and_grounds():
         synthesis.terminal_constraint(GKC7, (5, 6), ground=12)
     with pytest.raises(gl.InputError, match="at least one terminal"):
         synthesis.terminal_constraint(GKC7, (), ground=4)
-    with pytest.raises(gl.DataFormatError, match="gl.Mechanism"):
-        synthesis.terminal_constraint("cyl_gkc_5_7_2", (5, 6, 7), ground=4)
+    # a catalogue name stands for its mechanism (issue 25); anything else is refused by name
+    assert synthesis.terminal_constraint("cyl_gkc_5_7_2", (5, 6, 7), ground=4).equation == \
+        synthesis.terminal_constraint(gl.catalog.load("cyl_gkc_5_7_2"), (5, 6, 7), ground=4).equation
+    with pytest.raises(gl.DataFormatError, match="mech: expected a Mechanism"):
+        synthesis.terminal_constraint(None, (5, 6, 7), ground=4)
 
 
 def test_identify_refuses_what_is_not_a_chain_or_the_wrong_dof():

@@ -215,6 +215,8 @@ def parse_real_expr(value, where: str) -> sympy.Expr:
 
 def parse_teeth(value, where: str) -> int:
     """A tooth number: a positive integer no larger than :data:`MAX_TEETH`."""
+    if type(value) is int and 0 < value <= MAX_TEETH:  # the common case, fast
+        return value
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ToothNumberError(f"{where}: tooth number must be a positive integer, got {shown(value)}")
     if isinstance(value, numbers.Integral):

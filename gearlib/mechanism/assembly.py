@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from collections import Counter
 from dataclasses import dataclass
 
 from ..errors import AssemblyWarning
@@ -110,14 +111,16 @@ def planetary_sets(mech) -> tuple:
             by_carrier.setdefault(gp.carrier, []).append(gp)
     found = []
     for c, pairs in by_carrier.items():
-        label = {g: mech.coaxial(g, c) for gp in pairs for g in gp.gears}
-        shared = {lab for lab in label.values() if sum(1 for v in label.values() if v == lab) > 1}
+        coaxial = mech._groups.coaxial_label  # ids are the mechanism's own: no need to resolve them
+        label = {g: coaxial(g, c) for gp in pairs for g in gp.gears}
+        counts = Counter(label.values())
+        shared = {lab for lab, n in counts.items() if n > 1}
         meshes: dict = {}
         for gp in pairs:
             a, b = gp.gears
             meshes.setdefault(a, []).append((b, gp))
             meshes.setdefault(b, []).append((a, gp))
-        planets = [g for g in meshes if label[g] not in shared]
+        planets = {g: None for g in meshes if label[g] not in shared}  # ordered, and fast to test
         for p in planets:
             cs = [(g, gp) for g, gp in meshes[p] if label[g] in shared]
             for i, (g1, gp1) in enumerate(cs):

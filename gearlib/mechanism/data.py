@@ -128,7 +128,8 @@ class Mechanism:
         seen = {}
         for tp in tps:
             for x in tp.links:
-                need(x, f"turning pair {tp.links}")
+                if x not in known:
+                    need(x, f"turning pair {tp.links}")
             key = frozenset(tp.links)
             if key in seen:
                 raise DuplicateEdgeError(f"turning pair {tp.links} is given twice; remove one")
@@ -136,8 +137,9 @@ class Mechanism:
         seen_g = {}
         for gp in gps:
             for x in gp.gears:
-                need(x, f"gear pair {gp.label}")
-            if gp.carrier is not None:
+                if x not in known:
+                    need(x, f"gear pair {gp.label}")
+            if gp.carrier is not None and gp.carrier not in known:
                 need(gp.carrier, f"carrier of gear pair {gp.label}")
             key = frozenset(gp.gears)
             if key in seen_g:
@@ -300,8 +302,8 @@ class Mechanism:
                         f"ratios multiply to {sympy.nsimplify(product)}, not 1: the loop locks its gears. "
                         "Remove one pair of the loop or fix the tooth numbers"
                     )
-            adj.setdefault(a, []).append((b, gp.e))
-            adj.setdefault(b, []).append((a, 1 / gp.e))
+            adj.setdefault(a, []).append((b, gp, False))
+            adj.setdefault(b, []).append((a, gp, True))  # the inverse ratio, computed only on a loop
 
     @staticmethod
     def _tree_path(adj, start, goal):
@@ -312,9 +314,9 @@ class Mechanism:
             x = queue.pop()
             if x == goal:
                 break
-            for y, e in adj.get(x, ()):
+            for y, gp, inverse in adj.get(x, ()):
                 if y not in prev:
-                    prev[y] = (x, e)
+                    prev[y] = (x, 1 / gp.e if inverse else gp.e)
                     queue.append(y)
         path = []
         y = goal

@@ -54,6 +54,8 @@ def _check_keys(data: Mapping, allowed: Sequence[str], where: str) -> None:
 
 def _seq(value, where: str, what: str) -> tuple:
     """A list/tuple field as a tuple (None means empty), or a DataFormatError."""
+    if type(value) in (list, tuple):  # the common case first: the ABC checks below are slow
+        return tuple(value)
     if value is None:
         return ()
     if isinstance(value, (str, bytes, Mapping)) or not isinstance(value, Sequence):
@@ -70,6 +72,8 @@ def _text(value, where: str, what: str) -> str | None:
 
 
 def _pair_of(value, where: str, what: str) -> tuple:
+    if type(value) in (list, tuple) and len(value) == 2:  # the common case, fast
+        return tuple(value)
     if isinstance(value, (str, bytes)) or not isinstance(value, Sequence) or len(value) != 2:
         raise DataFormatError(f"{where}: `{what}` must be a list of two values, got {value!r}")
     return tuple(value)
@@ -175,10 +179,12 @@ class TurningPair:
         object.__setattr__(self, "links", (a, b))
         if a == b:
             raise SelfMeshError(f"{where} joins link {a} to itself; a turning pair joins two different links")
-        if isinstance(self.axis, bool) or not isinstance(self.axis, (str, numbers.Integral)) or str(self.axis) == "":
+        if type(self.axis) is str and self.axis:
+            pass  # the common case, fast
+        elif isinstance(self.axis, bool) or not isinstance(self.axis, (str, numbers.Integral)) or str(self.axis) == "":
             raise DataFormatError(f"{where}: axis label must be a short text such as 'a', got {self.axis!r}")
         object.__setattr__(self, "axis", str(self.axis))
-        bearings = tuple(
+        bearings = () if self.bearings == () else tuple(
             b if isinstance(b, Bearing) else Bearing.from_dict(b, f"{where} bearing {i + 1}")
             for i, b in enumerate(_seq(self.bearings, where, "bearings"))
         )
@@ -190,6 +196,8 @@ class TurningPair:
     @classmethod
     def from_data(cls, data, where: str = "turning pair") -> TurningPair:
         """From ``[a, b, label]`` or ``{"links": [a, b], "axis": label, "bearings": [...]}``."""
+        if type(data) in (list, tuple) and len(data) == 3:  # the common case, fast
+            return cls((data[0], data[1]), data[2])
         if isinstance(data, TurningPair):
             return data
         if isinstance(data, Mapping):
@@ -408,7 +416,7 @@ class GearPair:
     def from_data(cls, data, where: str = "gear pair") -> GearPair:
         if isinstance(data, GearPair):
             return data
-        if not isinstance(data, Mapping):
+        if type(data) is not dict and not isinstance(data, Mapping):
             raise DataFormatError(f"{where}: expected a mapping such as {{gears: [1, 2], teeth: [20, 40]}}, got {data!r}")
         fields = ("gears", "teeth", "ratio", "carrier", "type", "kind", "angles", "radii", "name", "module",
                   "normal_module", "helix_angle", "profile_shift", "pressure_angle")

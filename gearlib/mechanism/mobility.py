@@ -111,6 +111,97 @@ def _null_basis(ech: _linalg.Echelon, n: int) -> list[list]:
     return basis
 
 
+# ------------------------------------------------------------- a fast certificate, modulo a prime
+_P = (1 << 61) - 1  # a Mersenne prime
+
+
+def _mod(x: Fraction):
+    d = x.denominator % _P
+    return None if d == 0 else x.numerator % _P * pow(d, -1, _P) % _P
+
+
+def _modular_certificate(mech: Mechanism, extra_rows):
+    """``(rank of W, rank of [W; extra])`` when they can be certified cheaply, else None.
+
+    The exact elimination of a long train carries fractions with as many digits as the train
+    has gears (a 100,000-pair serial train: numbers of 30,000 digits). Modulo a prime *p* the
+    numbers stay small. A row independent of the others modulo *p* is independent over the
+    rationals (a rational dependency, cleared of denominators, would hold modulo *p* too), so
+    when every row is independent modulo *p* the ranks are exact; so is "no gear pair is locked"
+    when, modulo *p*, every gear turns relative to its carrier in some null vector. Any other
+    outcome (a dependent row, an apparently locked pair, a ratio that is not rational or whose
+    denominator *p* divides) returns None and the exact elimination decides."""
+    ratios = []
+    for gp in mech.gear_pairs:
+        if gp.ratio is None and gp.angles is None and gp.kind != "bevel":  # from the teeth, without sympy
+            na, nb = gp.teeth
+            f = Fraction(-na if gp.kind == "external" else na, nb)
+        else:
+            f = to_fraction(gp.e)
+        e = None if f is None else _mod(f)
+        if e is None:
+            return None
+        ratios.append(e)
+    ix = mech.index
+    pivots: dict = {}  # column -> row (dict, pivot coefficient 1)
+    order: list = []
+
+    def add(row) -> bool:
+        row = {c: v % _P for c, v in row.items() if v % _P}
+        stack = [c for c in row if c in pivots]
+        while stack:
+            c = stack.pop()
+            coef = row.pop(c, 0)
+            if not coef:
+                continue
+            for col, val in pivots[c].items():
+                if col == c:
+                    continue
+                new = (row.get(col, 0) - coef * val) % _P
+                if new:
+                    if col not in row and col in pivots:
+                        stack.append(col)
+                    row[col] = new
+                else:
+                    row.pop(col, None)
+        if not row:
+            return False
+        col = max(row)
+        inv = pow(row[col], -1, _P)
+        pivots[col] = {c: v * inv % _P for c, v in row.items()}
+        order.append(col)
+        return True
+
+    for gp, e in zip(mech.gear_pairs, ratios):
+        a, b = gp.gears
+        row = {ix[b]: 1}
+        row[ix[a]] = row.get(ix[a], 0) - e
+        row[ix[gp.carrier]] = row.get(ix[gp.carrier], 0) + e - 1
+        if not add(row):
+            return None
+    rank_w = len(order)
+    for row in extra_rows:
+        if not add({c: _mod(Fraction(v)) for c, v in row.items()}):
+            return None
+    n = len(mech.links)
+    turning = [False] * len(mech.gear_pairs)
+    for f in (c for c in range(n) if c not in pivots):
+        x = [0] * n
+        x[f] = 1
+        for col in reversed(order):
+            value = 0
+            for c, v in pivots[col].items():
+                if c != col:
+                    value -= v * x[c]
+            x[col] = value % _P
+        for i, gp in enumerate(mech.gear_pairs):
+            if x[ix[gp.gears[0]]] != x[ix[gp.carrier]]:
+                turning[i] = True
+    if not all(turning):
+        return None
+    return rank_w, len(order)
+
+
 @takes_mechanism
 def redundant_gear_pairs(mech: Mechanism) -> tuple:
     """Gear pairs whose Willis equation follows from the pairs before them (for the actual,
@@ -133,16 +224,20 @@ def dof(mech: Mechanism, ground=None, *, held=(), joined=()) -> Mobility:
     joined = mech.resolve_pairs(joined, "joined link")
     extra += [{ix[h]: Fraction(1)} for h in held]
     extra += [{ix[u]: Fraction(1), ix[v]: Fraction(-1)} for u, v in joined]
-    ech, rank_w = _rank_and_basis(mech, extra)
-    rank_dof = m - ech.rank
-    redundant_gp = tuple(gp for gp in ech.dependent if gp is not None)
-    basis = _null_basis(ech, m)
-    is_zero = ech.field.is_zero
-    locked = tuple(
-        gp
-        for gp in mech.gear_pairs
-        if all(is_zero(x[ix[gp.gears[0]]] - x[ix[gp.carrier]]) for x in basis)
-    )
+    fast = _modular_certificate(mech, extra) if len(mech.gear_pairs) > 200 else None
+    if fast is not None:  # every row independent, no pair locked: certified without big numbers
+        rank_dof, redundant_gp, locked = m - fast[1], (), ()
+    else:
+        ech, rank_w = _rank_and_basis(mech, extra)
+        rank_dof = m - ech.rank
+        redundant_gp = tuple(gp for gp in ech.dependent if gp is not None)
+        basis = _null_basis(ech, m)
+        is_zero = ech.field.is_zero
+        locked = tuple(
+            gp
+            for gp in mech.gear_pairs
+            if all(is_zero(x[ix[gp.gears[0]]] - x[ix[gp.carrier]]) for x in basis)
+        )
     planar = 3 * (m - 1) - 2 * jr - jg
     count = jr - jg
     shift = len(held) + len(joined)

@@ -35,11 +35,15 @@ def _axes(ax, figsize=(5.0, 4.0)):
     return ax
 
 
-def _edge(ax, p, q, *, rad=0.0, lw=1.2, color="black", double=False, zorder=1, label=None, font=9):
+def _edge(ax, p, q, *, rad=0.0, lw=1.2, color="black", double=False, zorder=1, label=None, font=9, batch=None):
+    """One edge; a straight one goes into *batch* (``{(lw, color, zorder): segments}``, drawn
+    by :func:`_flush` as one collection per style) when given, else it is a Line2D."""
     from matplotlib.patches import FancyArrowPatch
 
     style = dict(arrowstyle="-", connectionstyle=f"arc3,rad={rad}", shrinkA=0, shrinkB=0)
-    if rad == 0 and not double:  # a straight line: a plain Line2D draws faster than a patch
+    if rad == 0 and not double and batch is not None:
+        batch.setdefault((lw, color, zorder), []).append((p, q))
+    elif rad == 0 and not double:  # a straight line: a plain Line2D draws faster than a patch
         ax.plot([p[0], q[0]], [p[1], q[1]], linewidth=lw, color=color, zorder=zorder, solid_capstyle="butt")
     elif double:
         ax.add_patch(FancyArrowPatch(p, q, linewidth=lw + 3.0, color=color, zorder=zorder, **style))
@@ -54,6 +58,17 @@ def _edge(ax, p, q, *, rad=0.0, lw=1.2, color="black", double=False, zorder=1, l
         off = 0.08 if rad == 0 else -0.08 * (1 if rad > 0 else -1)
         ax.text(mx - dy / norm * off, my + dx / norm * off, label, fontsize=font, ha="center", va="center",
                 style="italic", color=color if color != "white" else "black", zorder=5)
+
+
+def _flush(ax, batch) -> None:
+    """Draw the straight edges gathered by :func:`_edge`: one LineCollection per style (a
+    widget redraws a graph per frame, and each Line2D costs more than its drawing)."""
+    from matplotlib.collections import LineCollection
+
+    for (lw, color, zorder), segments in batch.items():
+        ax.add_collection(LineCollection(segments, linewidths=lw, colors=color, zorder=zorder, capstyle="butt"),
+                          autolim=True)
+    batch.clear()
 
 
 def _node(ax, xy, text, *, face="white", edge="black", ring=None, marker="o", size=380, font=10):
@@ -168,29 +183,37 @@ def draw_units(frac, ax=None, *, pos=None, title=None, ground=None, linkages=Tru
             elif c.kind == "2-link chain":
                 ax.plot(*zip(*pts), color="gold", linewidth=14, alpha=0.45, solid_capstyle="round", zorder=0)
     seen: dict = {}
+    batch: dict = {}
     for tp in mech.turning_pairs:
         u, v = tp.links
         k = seen.get(frozenset((u, v)), 0)
         seen[frozenset((u, v))] = k + 1
-        _edge(ax, pos[u], pos[v], rad=0.25 * k, lw=1.1, label=tp.axis, font=font_size - 1)
+        _edge(ax, pos[u], pos[v], rad=0.25 * k, lw=1.1, label=tp.axis, font=font_size - 1, batch=batch)
     unit_of = {}
     for i, unit in enumerate(frac.units):
         for gp in unit.gear_pairs + unit.redundant_pairs:
             u, v = gp.gears
             k = seen.get(frozenset((u, v)), 0)
             seen[frozenset((u, v))] = k + 1
-            _edge(ax, pos[u], pos[v], rad=0.25 * k, lw=4.0, color=colors[i], zorder=1)
+            _edge(ax, pos[u], pos[v], rad=0.25 * k, lw=4.0, color=colors[i], zorder=1, batch=batch)
         for x in unit.links:
             unit_of.setdefault(x, []).append(i)
-    ringed = [x for x in mech.link_ids if len(unit_of.get(x, [])) > 1]
-    if ringed:
-        ax.scatter([pos[x][0] for x in ringed], [pos[x][1] for x in ringed], s=420 * 2.2, zorder=2, alpha=0.45,
-                   facecolor=[colors[unit_of[x][0]] for x in ringed], edgecolor="none")
+    _flush(ax, batch)
+    # markers as Line2D (one per style): a scatter collection finds the extent of its Bezier
+    # circles by solving polynomials at every draw, which cost a widget frame a quarter of its time
+    ringed: dict = {}
+    for x in mech.link_ids:
+        if len(unit_of.get(x, [])) > 1:
+            ringed.setdefault(colors[unit_of[x][0]], []).append(pos[x])
+    for color, pts in ringed.items():
+        ax.plot(*zip(*pts), linestyle="none", marker="o", markersize=math.sqrt(420 * 2.2), markerfacecolor=color,
+                markeredgecolor="none", alpha=0.45, zorder=2)
     for marker, face, group in (("o", "white", [x for x in mech.link_ids if x != ground]),
                                 ("s", "0.75", [x for x in mech.link_ids if x == ground])):
         if group:
-            ax.scatter([pos[x][0] for x in group], [pos[x][1] for x in group], s=420, marker=marker,
-                       facecolor=face, edgecolor="black", linewidth=1.5, zorder=3)
+            ax.plot([pos[x][0] for x in group], [pos[x][1] for x in group], linestyle="none", marker=marker,
+                    markersize=math.sqrt(420), markerfacecolor=face, markeredgecolor="black", markeredgewidth=1.5,
+                    zorder=3)
     for x in mech.link_ids:
         ax.text(*pos[x], str(x), ha="center", va="center", fontsize=font_size, zorder=4)
     handles = [Patch(color=colors[i], label=f"{u.name} {u.label}") for i, u in enumerate(frac.units)]
