@@ -38,6 +38,7 @@ __all__ = [
     "GeometryError",
     "GearlibWarning",
     "AssemblyWarning",
+    "DataWarning",
 ]
 
 
@@ -127,3 +128,10 @@ class AssemblyWarning(GearlibWarning):
     """A planetary set fails an assembly condition: its planets are not concentric with the sun
     and ring (profile shift can offset a small difference), cannot be spaced equally, or
     collide with their neighbours (:func:`gearlib.assembly_conditions`)."""
+
+
+class DataWarning(GearlibWarning):
+    """Data that can be analysed but contradicts itself in a way that is probably a typing
+    mistake: an ``internal`` gear pair whose Penaud angles make the ratio of an external mesh
+    (or the reverse), a spur pair whose angles make a complex ratio. The data decide (the
+    angles give the ratio); the warning says which field to check."""

@@ -6,6 +6,7 @@ tooth-defect and bearing frequencies off the speeds. This package holds
 
 * ``matrix`` - the link table, the matrix :func:`~gearlib.adjacency_matrix`, its null space and
   normalisations, speed ratios, directions, readable matrices;
+* ``rank`` - Penaud's count ``N - rank(M)`` (:func:`~gearlib.adjacency_rank`);
 * ``frequencies`` and ``bearings`` - contact frequencies of every mesh and rolling
   bearing (:func:`~gearlib.frequency_table`), bearing data given apart from a mechanism;
 * ``monitoring`` and ``planetary`` - condition monitoring: the fault frequencies of any
@@ -24,6 +25,7 @@ EXPORTS = {
     "matrix": ("link_table", "adjacency_matrix", "null_space", "reduced_basis", "same_subspace", "constraint_rows",
                "speed_ratio_matrix", "Direction", "direction", "show_link_table", "show_matrix", "MatrixView",
                "format_entry"),
+    "rank": ("AdjacencyRank", "adjacency_rank"),
     "frequencies": ("FrequencyRow", "FrequencyTable", "gear_frequencies", "frequency_table", "plot_spectrum",
                     "CONVENTIONS"),
     "bearings": ("BearingFrequencies", "bearing_frequencies", "read_bearings", "load_bearings", "with_bearings"),
@@ -34,7 +36,7 @@ EXPORTS = {
 }
 
 TOP = (
-    "link_table", "adjacency_matrix", "null_space", "speed_ratio_matrix",
+    "link_table", "adjacency_matrix", "adjacency_rank", "AdjacencyRank", "null_space", "speed_ratio_matrix",
     "reduced_basis", "same_subspace", "constraint_rows", "direction", "show_link_table", "show_matrix",
     "frequency_table", "FrequencyTable", "FrequencyRow", "bearing_frequencies", "BearingFrequencies",
     "plot_spectrum", "load_bearings", "with_bearings", "wheel_speeds", "cornering_explorer", "plot_cornering",

@@ -12,29 +12,31 @@ from ..mechanism.data import Mechanism
 
 # Reconstructed Fig. 8: roles p (primary), x, y (connecting), 1, 2 (other secondary links).
 # turning pairs (parent, child, axis) and gear pairs (a, b, carrier). Confidence: TU-7 high
-# (its equations are in the text); IU-2..5, TU-2, TU-6 medium (fixed by their gains and
+# (its equations are in the text); IU-2..5, TU-2 and TU-6 medium (fixed by their gains and
 # characteristics (11) and (13)); TU-3, TU-4, TU-5 share one gain, and which of the three
-# ordinary three-mesh units carries which number is a guess.
+# ordinary three-mesh units carries which number is a guess. Each gear pair is oriented as
+# Tables 1 and 2 write its ratio (e_{y,1} e_{1,x}, not 1/(e_{x,1} e_{1,y})), so that the
+# derived gains read as the paper prints them.
 UNIT_TYPES = {
     "IU-1": ((("p", "x", "a"),), ()),
-    "IU-2": ((("p", "x", "a"), ("p", "y", "a"), ("p", "g1", "b")), (("x", "g1", "p"), ("g1", "y", "p"))),
+    "IU-2": ((("p", "x", "a"), ("p", "y", "a"), ("p", "g1", "b")), (("g1", "x", "p"), ("y", "g1", "p"))),
     "IU-3": ((("p", "x", "a"), ("x", "y", "a"), ("x", "g1", "b")), (("p", "g1", "x"), ("g1", "y", "x"))),
     "IU-4": ((("p", "x", "a"), ("p", "y", "a"), ("p", "g1", "b"), ("p", "g2", "c")),
-             (("x", "g1", "p"), ("g1", "g2", "p"), ("g2", "y", "p"))),
+             (("g1", "x", "p"), ("g2", "g1", "p"), ("y", "g2", "p"))),
     "IU-5": ((("p", "x", "a"), ("x", "y", "a"), ("x", "g1", "b"), ("x", "g2", "c")),
              (("p", "g1", "x"), ("g1", "g2", "x"), ("g2", "y", "x"))),
-    "TU-1": ((("p", "x", "a"), ("p", "y", "b")), (("x", "y", "p"),)),
-    "TU-2": ((("p", "x", "a"), ("p", "y", "b"), ("p", "g1", "c")), (("x", "g1", "p"), ("g1", "y", "p"))),
+    "TU-1": ((("p", "x", "a"), ("p", "y", "b")), (("y", "x", "p"),)),
+    "TU-2": ((("p", "x", "a"), ("p", "y", "b"), ("p", "g1", "c")), (("g1", "x", "p"), ("y", "g1", "p"))),
     "TU-3": ((("p", "x", "a"), ("p", "y", "b"), ("p", "g1", "c"), ("p", "g2", "d")),
-             (("x", "g1", "p"), ("g1", "g2", "p"), ("g2", "y", "p"))),
+             (("g1", "x", "p"), ("g2", "g1", "p"), ("y", "g2", "p"))),
     "TU-4": ((("p", "x", "a"), ("p", "y", "b"), ("p", "g1", "b"), ("p", "g2", "c")),
-             (("x", "g1", "p"), ("g1", "g2", "p"), ("g2", "y", "p"))),
+             (("g1", "x", "p"), ("g2", "g1", "p"), ("y", "g2", "p"))),
     "TU-5": ((("p", "x", "a"), ("p", "y", "b"), ("p", "g1", "b"), ("p", "g2", "a")),
-             (("x", "g1", "p"), ("g1", "g2", "p"), ("g2", "y", "p"))),
+             (("g1", "x", "p"), ("g2", "g1", "p"), ("y", "g2", "p"))),
     "TU-6": ((("p", "x", "a"), ("p", "y", "b"), ("x", "g2", "a"), ("x", "g1", "c")),
-             (("p", "g1", "x"), ("g1", "g2", "x"), ("g2", "y", "p"))),
+             (("p", "g1", "x"), ("g1", "g2", "x"), ("y", "g2", "p"))),
     "TU-7": ((("p", "x", "a"), ("p", "y", "b"), ("p", "g1", "b"), ("g1", "g2", "c")),
-             (("x", "g1", "p"), ("p", "g2", "g1"), ("g2", "y", "g1"))),
+             (("g1", "x", "p"), ("p", "g2", "g1"), ("g2", "y", "g1"))),
 }
 """Chen's Fig. 8 as data: ``name -> (turning pairs, gear pairs)`` over the roles."""
 

@@ -50,6 +50,7 @@ from ..errors import (
     UnknownLinkError,
 )
 from .elements import GearPair, Link, TurningPair, _check_keys, _fmt, _pair_of, _seq, _text
+from ._axes import infer_axes
 from .shifting import validate as validate_shifting
 
 __all__ = ['Mechanism']
@@ -145,6 +146,8 @@ class Mechanism:
             if key in seen_g:
                 raise DuplicateEdgeError(f"gear pair {gp.label} is given twice; remove one")
             seen_g[key] = gp
+        if any(tp.axis is None for tp in tps):  # labels left out: inferred from the carriers
+            tps = infer_axes(ids, tps, gps, lambda tp, label: dataclasses.replace(tp, axis=label))
         object.__setattr__(self, "links", links)
         object.__setattr__(self, "turning_pairs", tps)
 

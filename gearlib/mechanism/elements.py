@@ -19,11 +19,13 @@ angles) or given with the sign fixed by the chosen axis directions.
 
 from __future__ import annotations
 import numbers
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 import sympy
 from .._common.parse import (
+    shown,
     expr_to_data,
     parse_expr,
     parse_link_id,
@@ -32,7 +34,7 @@ from .._common.parse import (
     parse_real_expr,
     parse_teeth,
 )
-from ..errors import CarrierError, DataFormatError, SelfMeshError, UnknownLinkError
+from ..errors import CarrierError, DataFormatError, DataWarning, SelfMeshError, UnknownLinkError
 
 __all__ = ['Link', 'Bearing', 'TurningPair', 'GearPair', 'GEAR_KINDS']
 
@@ -69,6 +71,24 @@ def _text(value, where: str, what: str) -> str | None:
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         return str(value)
     raise DataFormatError(f"{where}: `{what}` must be text, got {value!r}")
+
+
+def _check_spur_angles(where: str, kind: str, angles) -> None:
+    """Warn when the Penaud angles of a spur pair contradict its ``type``: the ratio is
+    ``-(N_a/N_b) e^{i(theta_a - theta_b)}``, so an external mesh has equal angles (mod 2 pi),
+    an internal one angles that differ by pi, and any other difference means non-parallel axes."""
+    turn = float((angles[0] - angles[1]) / sympy.pi) % 2.0  # the difference, in half turns
+    made = "external" if min(turn, 2.0 - turn) < 1e-9 else "internal" if abs(turn - 1.0) < 1e-9 else None
+    if made == kind:
+        return
+    a, b = angles
+    if made is None:
+        what = "a complex ratio (axes that are not parallel): a bevel pair needs `type: bevel`"
+    else:
+        what = (f"the ratio of an {made} mesh (an internal mesh's angles differ by pi, an external mesh's are "
+                "equal); check `type` or the angles")
+    warnings.warn(f"{where} is `type: {kind}`, but its angles [{a}, {b}] make {what}. The angles decide the ratio",
+                  DataWarning, stacklevel=4)
 
 
 def _pair_of(value, where: str, what: str) -> tuple:
@@ -166,10 +186,14 @@ class Bearing:
 
 @dataclass(frozen=True)
 class TurningPair:
-    """A turning pair (thin edge) joining two links about the axis with the given label."""
+    """A turning pair (thin edge) joining two links about the axis with the given label.
+
+    The label may be left out (``None``, or ``[a, b]`` in a file, as Penaud's tables mark a
+    turning pair with a bare "p") when every gear pair of the mechanism names its carrier:
+    :class:`~gearlib.Mechanism` then infers it."""
 
     links: tuple
-    axis: str
+    axis: str | None = None
     bearings: tuple[Bearing, ...] = ()
 
     def __post_init__(self):
@@ -179,11 +203,12 @@ class TurningPair:
         object.__setattr__(self, "links", (a, b))
         if a == b:
             raise SelfMeshError(f"{where} joins link {a} to itself; a turning pair joins two different links")
-        if type(self.axis) is str and self.axis:
-            pass  # the common case, fast
+        if (type(self.axis) is str and self.axis) or self.axis is None:
+            pass  # the common case, fast; None: inferred by the mechanism from its carriers
         elif isinstance(self.axis, bool) or not isinstance(self.axis, (str, numbers.Integral)) or str(self.axis) == "":
             raise DataFormatError(f"{where}: axis label must be a short text such as 'a', got {self.axis!r}")
-        object.__setattr__(self, "axis", str(self.axis))
+        if self.axis is not None:
+            object.__setattr__(self, "axis", str(self.axis))
         bearings = () if self.bearings == () else tuple(
             b if isinstance(b, Bearing) else Bearing.from_dict(b, f"{where} bearing {i + 1}")
             for i, b in enumerate(_seq(self.bearings, where, "bearings"))
@@ -198,16 +223,19 @@ class TurningPair:
         """From ``[a, b, label]`` or ``{"links": [a, b], "axis": label, "bearings": [...]}``."""
         if type(data) in (list, tuple) and len(data) == 3:  # the common case, fast
             return cls((data[0], data[1]), data[2])
+        if type(data) in (list, tuple) and len(data) == 2:  # no label: inferred from the carriers
+            return cls((data[0], data[1]), None)
         if isinstance(data, TurningPair):
             return data
         if isinstance(data, Mapping):
             _check_keys(data, ("links", "axis", "bearings"), where)
-            if "links" not in data or "axis" not in data:
-                raise DataFormatError(f"{where}: needs `links: [a, b]` and `axis`")
-            return cls(data["links"], data["axis"], _seq(data.get("bearings"), where, "bearings"))
-        if isinstance(data, Sequence) and not isinstance(data, (str, bytes)) and len(data) == 3:
-            return cls((data[0], data[1]), data[2])
-        raise DataFormatError(f"{where}: expected [link, link, axis_label], got {data!r}")
+            if "links" not in data:
+                raise DataFormatError(f"{where}: needs `links: [a, b]` (and `axis`)")
+            return cls(data["links"], data.get("axis"), _seq(data.get("bearings"), where, "bearings"))
+        if isinstance(data, Sequence) and not isinstance(data, (str, bytes)) and len(data) in (2, 3):
+            return cls((data[0], data[1]), data[2] if len(data) == 3 else None)
+        raise DataFormatError(f"{where}: expected [link, link, axis_label] (or [link, link] when every gear pair "
+                              f"names its carrier), got {shown(data)}")
 
     def to_data(self):
         if self.bearings:
@@ -266,10 +294,13 @@ class GearPair:
             object.__setattr__(self, "ratio", r)
         if self.angles is not None:
             th = _pair_of(self.angles, where, "angles")
+            fresh = not all(isinstance(t, sympy.Basic) for t in th)  # not yet read (a copy warns no more)
             th = tuple(parse_real_expr(t, f"{where} angle") for t in th)
             object.__setattr__(self, "angles", th)
             if self.teeth is None:
                 raise DataFormatError(f"{where}: `angles` (Penaud's complex weights) need `teeth` as well")
+            if self.kind != "bevel" and fresh:
+                _check_spur_angles(where, self.kind, th)
         if self.radii is not None:
             ra, rb = _pair_of(self.radii, where, "radii")
             object.__setattr__(

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import math
 import numbers
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -37,6 +38,7 @@ from functools import cached_property
 import sympy
 
 from .._common import linalg as _linalg
+from .._common.parse import parse_expr
 from .atlas import canonical_graph, chain_problems, geared_chains, isomorphic
 from ..mechanism.equations import omega
 from ..errors import DataFormatError, InputError
@@ -293,6 +295,40 @@ class TerminalConstraint:
     def admissible(self) -> bool:
         return not self.reasons
 
+    def numeric(self, values=None) -> tuple | None:
+        """The coefficients with the mechanism's own gear ratios put in for the symbols
+        ``e_a_b`` (exact numbers for tooth numbers), or with *values* ``{symbol or (a, b): value}``
+        where given; None unless there is exactly one constraint. Rational coefficients are
+        scaled to the smallest whole numbers (the equation equals zero, so only their ratios
+        count).
+
+        >>> d = gl.catalog.load("cyl_standard_differential")
+        >>> gl.synthesis.terminal_constraint(d, (1, 2, 3), ground=0).numeric()
+        (2, 5, 5)
+        """
+        if self.coefficients is None:
+            return None
+        subs = {gp.symbol: gp.e for gp in self.mechanism.gear_pairs}
+        for key, value in (values or {}).items():
+            if isinstance(key, (tuple, list)):
+                gp, sign = self.mechanism.gear_pair(*key)
+                key, value = gp.symbol, parse_expr(value, f"values[{key}]") ** sign
+            subs[sympy.Symbol(str(key))] = parse_expr(value, f"values[{key}]")
+        nums = [sympy.simplify(sympy.sympify(a).xreplace(subs)) for a in self.coefficients]
+        if all(x.is_Rational for x in nums) and any(nums):  # the smallest whole numbers, same ratios
+            den = functools.reduce(sympy.ilcm, [x.q for x in nums], 1)
+            whole = [int(x * den) for x in nums]
+            g = functools.reduce(math.gcd, whole)
+            nums = [sympy.Integer(w // g) for w in whole]
+        return tuple(nums)
+
+    def numeric_equation(self, values=None):
+        """``sum a_i omega_i`` with the numbers of :meth:`numeric` (equal to zero)."""
+        nums = self.numeric(values)
+        if nums is None:
+            return None
+        return sum(a * omega(t) for a, t in zip(nums, self.terminals))
+
     def __str__(self) -> str:
         terms = ", ".join(map(str, self.terminals))
         head = f"ground {self.ground}, terminals {terms}: "
@@ -358,8 +394,30 @@ class Identification:
 
     @property
     def admissible(self) -> tuple:
-        """Admissible assignments, isomorphic repeats left out (Step 6)."""
+        """Admissible assignments, isomorphic repeats left out (Step 6): :attr:`repeats` lists
+        those left out, :attr:`all_admissible` every admissible assignment."""
         return tuple(c for c in self.candidates if c.admissible and (c.ground, c.terminals) not in self.duplicates)
+
+    @property
+    def all_admissible(self) -> tuple:
+        """Every admissible assignment, the isomorphic repeats included, in the order tried."""
+        return tuple(c for c in self.candidates if c.admissible)
+
+    @property
+    def repeats(self) -> tuple:
+        """``(candidate, (ground, terminals) of its earlier twin)`` for each admissible assignment
+        left out of :attr:`admissible` as isomorphic to an earlier one."""
+        return tuple((c, self.duplicates[(c.ground, c.terminals)]) for c in self.candidates
+                     if (c.ground, c.terminals) in self.duplicates)
+
+    def __repr__(self) -> str:
+        dropped = len(self.duplicates)
+        note = (f"; {dropped} isomorphic repeat{'s' * (dropped != 1)} left out (see .repeats, .all_admissible)"
+                if dropped else "")
+        return (f"Identification({self.chain.name!r}, n_terminals={self.n_terminals}, grounds={self.grounds}: "
+                f"{len(self.admissible)} admissible{note})")
+
+    __str__ = __repr__
 
     def result(self, cand: TerminalConstraint) -> str:
         """``"admissible"``, ``"isomorphic to ground g, terminals ..."`` or ``"—"``."""
