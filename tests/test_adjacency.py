@@ -243,3 +243,24 @@ def test_null_space_normalised_to_inputs_matches_exact_speeds(seed, n, dof, beve
     values = [int(v) for v in rng.integers(1, 9, size=len(links))]
     exact = gl.speeds(m, ground=0, inputs=dict(zip(links, values)), method="exact").as_complex()
     assert np.allclose(W @ values, exact, rtol=1e-8, atol=1e-8 * max(1.0, np.abs(exact).max()))
+
+
+def test_adjacency_rank_is_the_papers_count(ex1, car):
+    """gl.adjacency_rank: rank(M) and N - rank(M) (Penaud's eq. (4)), against numpy's matrix_rank
+    and sympy's exact rank; with a link held the count equals gl.dof (the rank of the Willis rows)."""
+    for mech, n_dof_paper, ground in ((ex1, 2, 1), (car, 3, 1)):
+        count = gl.adjacency_rank(mech)
+        M = gl.adjacency_matrix(mech)
+        assert count.rank == np.linalg.matrix_rank(M) == gl.adjacency_rank(mech, exact=True).rank
+        assert count.dof == int(count) == n_dof_paper and count.rows == M.shape[0]
+        held = gl.adjacency_rank(mech, zero_speed=[ground])
+        assert held.dof == int(gl.dof(mech, ground)) == gl.null_space(np.vstack([M, gl.constraint_rows(
+            mech, zero_speed=[ground])])).shape[1]
+    assert gl.adjacency_rank(car).redundant_rows == 1  # the second planet repeats the first (eq. (14))
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(0, 10**6), st.integers(4, 12), st.integers(1, 3))
+def test_adjacency_rank_with_a_link_held_is_the_dof(seed, n, dof):
+    m = gl.random_mechanism(n, dof=dof, rng=seed, bevel=0.3)  # n >= dof + 1
+    assert gl.adjacency_rank(m, zero_speed=[0]).dof == int(gl.dof(m, 0)) == dof

@@ -106,3 +106,46 @@ def test_nan_and_infinity_everywhere_numbers_go():
                 assert "tooth number" in str(err)
             else:
                 raise AssertionError(f"{bad} accepted at {path}")
+
+
+# ------------------------------------------------------------------ issue 25: corruptions of the text
+SPECIAL = st.sampled_from([
+    "9^9^9^9", "1e400", "exp(1000)", "2^-5000", "9" * 5000, "'" + "(" * 80 + "1" + ")" * 80 + "'", ".inf", ".nan",
+    "[" * 200 + "]" * 200, "{a: " * 100 + "1" + "}" * 100, "&x [1, 2]", "*x", "*nowhere", "!!python/object:os.system",
+    "\x00", "\ufeff", "~", "- - - - -", "? a", "<<: {a: 1}", "{}", "[]", "'", '"',
+])
+
+
+def _corrupt(text: str, how: int, at: int, value: str) -> str:
+    lines = text.splitlines(keepends=True)
+    i = at % max(1, len(lines))
+    if how == 0:  # a line given twice: duplicate keys
+        return "".join(lines[: i + 1] + lines[i:])
+    if how == 1:  # a value replaced by something special
+        line = lines[i]
+        if ":" in line:
+            key = line.split(":", 1)[0]
+            lines[i] = f"{key}: {value}\n"
+        return "".join(lines)
+    if how == 2:  # a number replaced, wherever it is
+        import re
+
+        return re.sub(r"\b\d+\b", value if value.strip("9") == "" or value[0].isdigit() else "1e400", text, count=1 + at % 5)
+    if how == 3:  # an anchor and an alias bomb in front
+        return "".join(f"b{k}: &b{k} [" + ", ".join([f"*b{k - 1}"] * 9 if k else ["x"] * 9) + "]\n"
+                       for k in range(at % 12)) + text
+    return text + "\n" + value + "\n"  # something appended
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(SOURCES), st.integers(0, 4), st.integers(0, 10**6), SPECIAL)
+def test_corrupted_files_load_or_fail_in_one_line(name, how, at, value):
+    """Any corruption of a valid file either still loads (and analyses) or raises a gearlib
+    error of one line naming the text: never a yaml, Python or numpy error, never a hang."""
+    text = _corrupt(gl.catalog.path(name).read_text(), how, at, value)
+    try:
+        m = gl.loads(text)
+    except gl.GearlibError as err:
+        assert "\n" not in str(err) and str(err).startswith("<text>") and len(str(err)) < 2000
+        return
+    gl.dof(m)

@@ -278,3 +278,88 @@ def test_pitch_radii_from_the_module_or_the_normal_module_and_helix_angle():
     assert gl.GearPair((1, 2), teeth=(20, 44), radii=(25, 55), module=2.5).pitch_radii == (25.0, 55.0)
     with pytest.raises(gl.DataFormatError, match="disagree with module"):
         gl.GearPair((1, 2), teeth=(20, 44), radii=(25, 56), module=2.5)
+
+
+# ------------------------------------------------------------------ axis labels left out (issue 25)
+def _without_labels(mech):
+    data = mech.to_dict()
+    data["turning_pairs"] = [tp[:2] if isinstance(tp, list) else {k: v for k, v in tp.items() if k != "axis"}
+                             for tp in data["turning_pairs"]]
+    return data
+
+
+@pytest.mark.parametrize("name", gl.catalog.names())
+def test_axis_labels_follow_from_the_carriers(name):
+    """Penaud's tables mark a turning pair with a bare "p": with every carrier given, the labels
+    are inferred, and the mechanism turns exactly as the labelled one (Willis needs the carriers
+    only). Coaxialities that no gear pair implies (a sun and a ring on one carrier) are not."""
+    mech = gl.catalog.load(name)
+    bare = gl.Mechanism.from_dict(_without_labels(mech))
+    assert [gp.carrier for gp in bare.gear_pairs] == [gp.carrier for gp in mech.gear_pairs]
+    for gp in mech.gear_pairs:  # each gear on its carrier, the two on different axes
+        la, lb = (bare.coaxial(g, gp.carrier) for g in gp.gears)
+        assert la and lb and la != lb
+        assert mech.coaxial(*gp.gears) is None and bare.coaxial(*gp.gears) is None
+    ground = mech.ground if mech.ground is not None else mech.link_ids[0]
+    assert int(gl.dof(bare, ground)) == int(gl.dof(mech, ground))
+    if not mech.is_symbolic:
+        assert gl.same_subspace(gl.null_space(gl.adjacency_matrix(bare)), gl.null_space(gl.adjacency_matrix(mech)))
+    assert gl.Mechanism.from_dict(bare.to_dict()) == bare  # the inferred labels are written out
+
+
+def test_penauds_example_1_as_its_table_gives_it():
+    """Penaud and Alazard's Table 1 for example 1: "p" between the carrier 4 and links 1, 2, 3."""
+    table = gl.Mechanism.from_dict({
+        "links": [1, 2, 3, 4], "turning_pairs": [[4, 1], [4, 2], [4, 3]],
+        "gear_pairs": [{"gears": [1, 3], "teeth": [15, 10], "type": "bevel", "angles": ["pi/4", "-pi/12"],
+                        "carrier": 4},
+                       {"gears": [2, 3], "teeth": [25, 10], "type": "bevel", "angles": ["-7*pi/12", "pi/12"],
+                        "carrier": 4}]})
+    ex1 = gl.catalog.load("penaud_example_1")
+    assert gl.speeds(table, ground=1, inputs={2: 1}).values == gl.speeds(ex1, ground=1, inputs={2: 1}).values
+    assert table.coaxial(1, 4) and table.coaxial(3, 4) != table.coaxial(1, 4)
+
+
+def test_axis_labels_in_a_loop_of_bearings_are_one():
+    # the car differential: side gears on the frame and in the cage (coaxial bearing loops)
+    car = gl.catalog.car_differential()
+    bare = gl.Mechanism.from_dict(_without_labels(car))
+    assert {tp.links: tp.axis for tp in bare.turning_pairs}[(7, 3)] == {tp.links: tp.axis for tp in
+                                                                          bare.turning_pairs}[(1, 3)]
+    assert len(bare.redundant_turning_pairs) == len(car.redundant_turning_pairs)
+
+
+def test_spur_pairs_whose_angles_contradict_their_type_warn():
+    base = {"links": [1, 2, 3], "turning_pairs": [[3, 1, "a"], [3, 2, "b"]]}
+
+    def pair(kind, angles):
+        return gl.Mechanism.from_dict({**base, "gear_pairs": [{"gears": [1, 2], "teeth": [20, 40], "type": kind,
+                                                               "angles": angles}]})
+
+    with pytest.warns(gl.DataWarning, match="internal.*ratio of an external mesh"):
+        m = pair("internal", [0, 0])
+    assert m.gear_pairs[0].e == sympy.Rational(-1, 2)  # the angles decide
+    with pytest.warns(gl.DataWarning, match="complex ratio"):
+        pair("external", ["pi/2", 0])
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", gl.DataWarning)
+        assert pair("internal", ["pi", 0]).gear_pairs[0].e == sympy.Rational(1, 2)
+        assert pair("external", ["pi/3", "pi/3"]).gear_pairs[0].e == sympy.Rational(-1, 2)
+
+
+def test_stored_layouts_are_the_kamada_kawai_layouts():
+    """The catalogue's graph layouts stored for widgets (gearlib/mechanism/layouts.json) are what
+    the optimisation gives now; a networkx that lays them out differently fails here."""
+    from gearlib.mechanism.plot import _compute_kamada_kawai, _edges, _layout_key, _stored_layouts
+
+    stored = _stored_layouts()
+    assert stored
+    for name in gl.catalog.names():
+        mech = gl.catalog.load(name)
+        key = _layout_key(tuple(mech.link_ids), _edges(mech))
+        if mech.layout or key not in stored:
+            continue
+        fresh = [xy for _, xy in _compute_kamada_kawai(tuple(mech.link_ids), _edges(mech))]
+        assert max(abs(a - b) for p, q in zip(stored[key], fresh) for a, b in zip(p, q)) < 1e-3, name

@@ -78,3 +78,44 @@ def test_serial_train_ratio(n):
     from fractions import Fraction
 
     assert gl.ratio(m, output=n + 1, input=1, ground=0) == Fraction(-1, 2) ** n
+
+
+# ------------------------------------------------ the rank certified modulo a prime (issue 25)
+def _exact_ranks(m, extra):
+    from gearlib.mechanism.mobility import _rank_and_basis
+
+    ech, rank_w = _rank_and_basis(m, extra)
+    return rank_w, ech.rank, [t for t in ech.dependent if t is not None]
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 10**6), st.integers(3, 40), st.integers(1, 3), st.integers(0, 2))
+def test_the_modular_certificate_agrees_with_exact_elimination(seed, n, dof, n_held):
+    """Whenever the fast path of gl.dof answers (every row independent modulo a prime, no pair
+    locked), the exact rational elimination gives the same ranks; when it cannot, it declines."""
+    from gearlib.mechanism.mobility import _modular_certificate
+
+    assume(n >= dof + 1)
+    m = gl.random_mechanism(n, dof=dof, rng=seed)
+    held = list(m.link_ids[1:1 + n_held])
+    extra = [{0: 1}] + [{m.index[h]: 1} for h in held]
+    cert = _modular_certificate(m, extra)
+    rank_w, rank, dependent = _exact_ranks(m, extra)
+    if cert is not None:
+        assert cert == (rank_w, rank) and not dependent
+    else:  # it declines only for a reason the exact path also finds
+        assert dependent or gl.dof(m, 0, held=held).locked_gear_pairs
+
+
+def test_the_certificate_declines_what_it_cannot_certify():
+    from gearlib.mechanism.mobility import _modular_certificate
+
+    car = gl.catalog.car_differential()  # a second planet: a dependent row
+    assert _modular_certificate(car, [{car.index[1]: 1}]) is None
+    train = gl.serial_train(250)  # more than 200 pairs: gl.dof takes the fast path
+    assert _modular_certificate(train, [{0: 1}, {1: 1}]) is None  # no freedom left: every pair locked
+    locked = gl.dof(train, 0, held=[1])
+    assert int(locked) == 0 and len(locked.locked_gear_pairs) == 250
+    assert int(gl.dof(train, 0)) == 1 and gl.dof(train, 0).locked_gear_pairs == ()
+    wrist = gl.catalog.robotic_wrist()  # symbolic ratios: not rational, left to the exact path
+    assert _modular_certificate(wrist, [{0: 1}]) is None

@@ -159,3 +159,20 @@ def test_structure_matrix_equals_the_null_space_for_random_ratios(make, end, inp
             for k, line in enumerate(robot.lines):
                 phi = complex(sol.relative(line.input, line.start))
                 assert abs(phi - complex(A[i - 1, k])) < 1e-9
+
+
+PRINTED = {  # Chen (1998), Tables 1 and 2, in the paper's own symbols (1 and 2 written g1 and g2 here)
+    "IU-2": "e_y_g1*e_g1_x", "IU-3": "1/(1 - e_p_g1*e_g1_y)", "IU-4": "e_y_g2*e_g2_g1*e_g1_x",
+    "IU-5": "1/(1 - e_p_g1*e_g1_g2*e_g2_y)", "TU-1": "e_y_x", "TU-2": "e_y_g1*e_g1_x",
+    "TU-3": "e_y_g2*e_g2_g1*e_g1_x", "TU-4": "e_y_g2*e_g2_g1*e_g1_x", "TU-5": "e_y_g2*e_g2_g1*e_g1_x",
+    "TU-6": "e_y_g2/(1 - e_p_g1*e_g1_g2)", "TU-7": "e_g1_x/(1 - e_p_g2*e_g2_y)",
+}
+
+
+@pytest.mark.parametrize("name", sorted(PRINTED))
+def test_unit_gains_read_as_the_tables_print_them(name):
+    """Issue 25: the templates' gear pairs run as the tables write their ratios, so each derived
+    gain is the printed expression symbol for symbol (no e_{b,a} = 1/e_{a,b} to apply)."""
+    printed = sympy.sympify(PRINTED[name].replace("g1", "1").replace("g2", "2"))
+    derived = gl.robots.unit_gains()[name]
+    assert sympy.simplify(derived - printed) == 0 and derived.free_symbols == printed.free_symbols

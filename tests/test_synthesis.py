@@ -317,3 +317,36 @@ def test_drawings_and_widget():
     assert "redundant links 5, 7" in ex.text
     ex.update(chain=GKC8.name)
     assert ex.state["chain"] == GKC8.name and ex.state["ground"] == 2
+
+
+# ------------------------------------------------------------------ issue 25: no workarounds
+def test_identification_says_what_it_left_out_and_offers_the_full_list():
+    """CYL's eight-link chain: ground 3 with terminals 0, 1, 2 is the mirror image of ground 1
+    with terminals 0, 2, 3 (links 1 <-> 3 and 4 <-> 6 exchanged); admissible leaves it out."""
+    ident = synthesis.identify(GKC8)
+    full = [(c.ground, c.terminals) for c in ident.all_admissible]
+    kept = [(c.ground, c.terminals) for c in ident.admissible]
+    assert full == [(0, (1, 2, 3)), (1, (0, 2, 3)), (2, (0, 1, 3)), (3, (0, 1, 2))]
+    assert kept == full[:3]
+    assert [((c.ground, c.terminals), twin) for c, twin in ident.repeats] == [((3, (0, 1, 2)), (1, (0, 2, 3)))]
+    assert "1 isomorphic repeat left out" in repr(ident) and "all_admissible" in str(ident)
+    assert "left out" not in repr(synthesis.identify(GKC7))
+
+
+def test_the_constraint_in_numbers():
+    """numeric(): the mechanism's own ratios put in, the smallest whole numbers; checked against
+    gl.speeds on the same mechanism (an independent solve of every Willis equation)."""
+    d = gl.catalog.load("cyl_standard_differential")
+    c = synthesis.terminal_constraint(d, (1, 2, 3), ground=0)
+    sol = gl.speeds(d, ground=0, inputs={2: 3, 3: 7})
+    assert sum(a * sol[t] for a, t in zip(c.numeric(), (1, 2, 3))) == 0
+    assert all(isinstance(a, sympy.Integer) for a in c.numeric()) and sympy.gcd_list(list(c.numeric())) == 1
+    assert sympy.expand(c.numeric_equation() - sum(a * gl.omega(t) for a, t in zip(c.numeric(), (1, 2, 3)))) == 0
+    # other values for some ratios: by symbol or by gear pair (either direction)
+    e42 = sympy.Symbol("e_4_2")
+    by_symbol, by_pair = c.numeric({e42: 2}), c.numeric({(2, 4): sympy.Rational(1, 2)})
+    direct = [sympy.sympify(a).subs({gp.symbol: gp.e for gp in d.gear_pairs if gp.symbol != e42}).subs(e42, 2)
+              for a in c.coefficients]
+    assert by_symbol == by_pair and synthesis.proportional(by_symbol, direct)
+    assert synthesis.terminal_constraint(GKC8, (1, 2, 4), ground=0).numeric() is None or \
+        synthesis.terminal_constraint(GKC8, (1, 2, 4), ground=0).count == 1

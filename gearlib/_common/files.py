@@ -150,6 +150,9 @@ def parse_text(text: str, where: str):
         raise FileFormatError(f"{where}: not valid YAML or JSON{at}: {problem}") from None
     except RecursionError:
         raise FileFormatError(f"{where}: nested more than {MAX_DEPTH} levels deep; a mechanism needs 4") from None
+    except ValueError as err:  # Python refuses to read an integer of more than 4300 digits
+        why = "a number has thousands of digits" if "digits" in str(err) else " ".join(str(err).split())[:200]
+        raise FileFormatError(f"{where}: cannot be read: {why}") from None
     if not parsed and "&" in text and "*" in text:  # YAML anchors and aliases: shared parts to count
         check_size(data, where)
     return data

@@ -229,7 +229,8 @@ def parse_teeth(value, where: str) -> int:
     if n <= 0:
         raise ToothNumberError(f"{where}: tooth number must be positive, got {shown(n)}")
     if n > MAX_TEETH:
-        raise ToothNumberError(f"{where}: tooth number {shown(n)} is larger than {MAX_TEETH}; check the units")
+        raise ToothNumberError(f"{where}: tooth number {n if n < 10**30 else shown(n)} is larger than {MAX_TEETH}; "
+                               "check the units")
     return n
 
 
@@ -324,7 +325,10 @@ def iterable(x) -> bool:
 def shown(x, limit: int = 60) -> str:
     """``repr(x)`` for a message, cut to *limit* characters (an integer of thousands of digits by its size)."""
     if isinstance(x, int) and not isinstance(x, bool) and x.bit_length() > 200:
-        return f"an integer of {int(x.bit_length() * 0.30103) + 1} digits"
+        n = abs(x)
+        digits = int(n.bit_length() * 0.30102999566398)
+        digits += n >= 10**digits
+        return f"an integer of {digits} digits"
     try:
         text = repr(x)
     except Exception:  # noqa: BLE001 - a repr that fails says nothing useful anyway

@@ -105,7 +105,14 @@ codecs.register_error("gearlib-ascii", _fallback)
 
 
 def _readable_streams() -> None:
+    """Streams whose encoding lacks ``∠`` or Greek letters write them in ASCII (only those:
+    a UTF-8 terminal is left as it is)."""
     for stream in (sys.stdout, sys.stderr):
+        try:
+            "\u2220\u03c9\u03b7\u2212".encode(getattr(stream, "encoding", None) or "utf-8")
+            continue
+        except (UnicodeEncodeError, LookupError):
+            pass
         try:
             stream.reconfigure(errors="gearlib-ascii")
         except (AttributeError, ValueError, OSError):  # a stream without reconfigure (a test's capture)

@@ -517,7 +517,11 @@ def _numeric(mech, cons):
         return _scaled(small, largest, values[0]), 1
     if plan.dtype != complex and any(type(v) is complex and v.imag for v in values):
         values = np.array(values, dtype=complex)
-    return _clean(plan @ np.asarray(values)), len(cons.inputs)
+    with np.errstate(over="ignore", invalid="ignore"):
+        result = plan @ np.asarray(values)
+    if not np.isfinite(result).all():
+        raise InputError(_OVERFLOW)
+    return _clean(result), len(cons.inputs)
 
 
 def _dense_small(mech, cons):
@@ -678,8 +682,14 @@ def _repeat_numeric(mech, ground, inputs):
 def _scaled(column: list, largest: float, v) -> list:
     """``column * v`` cleaned as :func:`_clean` does (``largest``: the largest ``|column|``),
     in one pass over Python floats."""
+    if abs(v) * largest > _FLOAT_MAX:
+        raise InputError(_OVERFLOW)
     lim = 1e-12 * max(1.0, abs(v) * largest)
     return [0.0 if -lim < (y := x * v) < lim else y for x in column]
+
+
+_OVERFLOW = ("the speeds exceed a float's range (about 1.8e308) for these inputs; scale the inputs down "
+             "(every speed is proportional to them)")
 
 
 def _clean(x) -> list:
@@ -750,11 +760,15 @@ def speeds(mech: Mechanism, ground=None, inputs=None, *, method: str = "exact", 
     if method not in _SOLVERS:
         raise DataFormatError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
     cons = Constraints.build(mech, ground, inputs, held, joined, symbolic_inputs=(method == "symbolic"))
-    values, dof = _SOLVERS[method](mech, cons)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported below, once
+        values, dof = _SOLVERS[method](mech, cons)
     if repeatable:
         _remember_numeric(mech, ground, inputs, cons)
     if method == "exact" and values and isinstance(values[0], sympy.Basic):
         values = [v if to_fraction(v) is None else to_fraction(v) for v in values]
+    if method != "symbolic" and any(not -_FLOAT_MAX <= v <= _FLOAT_MAX if isinstance(v, (Fraction, float, int))
+                                    else isinstance(v, complex) and not cmath.isfinite(v) for v in values):
+        raise InputError(_OVERFLOW)
     return Solution(mech, cons, tuple(values), method, dof)
 
 

@@ -12,7 +12,9 @@ square, input links as black squares, other links as circles.
 from __future__ import annotations
 import contextlib
 import functools
+import json
 import math
+import pathlib
 import textwrap
 import numpy as np
 from .._common.parse import shown
@@ -58,13 +60,37 @@ def graph_layout(mech: Mechanism) -> dict:
     deterministic Kamada-Kawai layout of its graph."""
     if mech.layout:
         return dict(mech.layout)
-    edges = tuple(tp.links for tp in mech.turning_pairs) + tuple(gp.gears for gp in mech.gear_pairs)
-    return dict(_kamada_kawai(tuple(mech.link_ids), edges))
+    return dict(_kamada_kawai(tuple(mech.link_ids), _edges(mech)))
+
+
+LAYOUTS = pathlib.Path(__file__).with_name("layouts.json")
+"""Kamada-Kawai layouts of the catalogue's graphs, stored (:func:`store_layouts`): the
+optimisation costs a widget's first frame of a mechanism more than the drawing, and many times
+more when a loaded machine's BLAS threads fight over it."""
+
+
+@functools.cache
+def _stored_layouts() -> dict:
+    try:
+        return json.loads(LAYOUTS.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+
+
+def _layout_key(nodes: tuple, edges: tuple) -> str:
+    return repr((nodes, edges))
 
 
 @functools.lru_cache(maxsize=64)
 def _kamada_kawai(nodes: tuple, edges: tuple) -> tuple:
     """The layout of one graph (deterministic, so a widget redrawing a chain reuses it)."""
+    stored = _stored_layouts().get(_layout_key(nodes, edges))
+    if stored is not None and len(stored) == len(nodes):
+        return tuple((n, (float(x), float(y))) for n, (x, y) in zip(nodes, stored))
+    return _compute_kamada_kawai(nodes, edges)
+
+
+def _compute_kamada_kawai(nodes: tuple, edges: tuple) -> tuple:
     import networkx as nx
 
     g = nx.Graph()
@@ -76,6 +102,31 @@ def _kamada_kawai(nodes: tuple, edges: tuple) -> tuple:
     start = {n: (math.cos(2 * math.pi * i / len(g)), math.sin(2 * math.pi * i / len(g))) for i, n in enumerate(nodes)}
     pos = nx.kamada_kawai_layout(g, pos=start)
     return tuple((n, (float(x), float(y))) for n, (x, y) in pos.items())
+
+
+def store_layouts(names=None) -> int:
+    """Compute the Kamada-Kawai layout of every catalogue graph without a ``layout`` of its own
+    (or of *names*) and store them in :data:`LAYOUTS`; returns how many. Run it after adding a
+    catalogue entry: ``python -c "from gearlib.mechanism.plot import store_layouts; store_layouts()"``."""
+    from ._accept import catalogue_names, load_catalogue
+
+    out = {}
+    for name in names or catalogue_names():
+        mech = load_catalogue(name)
+        if mech.layout:
+            continue
+        nodes, edges = tuple(mech.link_ids), _edges(mech)
+        out[_layout_key(nodes, edges)] = [[round(x, 4), round(y, 4)] for _, (x, y) in
+                                          _compute_kamada_kawai(nodes, edges)]
+    lines = (f"{json.dumps(k)}: {json.dumps(v)}" for k, v in sorted(out.items()))
+    LAYOUTS.write_text("{\n" + ",\n".join(lines) + "\n}\n", encoding="utf-8")
+    _stored_layouts.cache_clear()
+    _kamada_kawai.cache_clear()
+    return len(out)
+
+
+def _edges(mech) -> tuple:
+    return tuple(tp.links for tp in mech.turning_pairs) + tuple(gp.gears for gp in mech.gear_pairs)
 
 
 @takes_mechanism
