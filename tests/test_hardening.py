@@ -406,7 +406,7 @@ API_25 = [
      "torque: expected a finite number"),
     ("infinite speed", lambda: gl.efficiency(EPI, 1, 5, 2, eta=0.98, speed=math.inf), gl.DataFormatError,
      "speed: expected a finite number"),
-    ("torque as text", lambda: gl.efficiency(EPI, 1, 5, 2, eta=0.98, torque="x"), gl.DataFormatError, "torque"),
+    ("torque as text", lambda: gl.efficiency(EPI, 1, 5, 2, eta=0.98, torque="x"), gl.InputError, "torque"),
     ("torque balance eta=2", lambda: gl.torque_balance_efficiency(EPI, 1, 5, 2, eta=2), gl.InputError, "(0, 1]"),
     ("torque balance eta=NaN", lambda: gl.torque_balance_efficiency(EPI, 1, 5, 2, eta=math.nan), gl.InputError,
      "(0, 1]"),

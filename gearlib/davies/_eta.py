@@ -30,7 +30,7 @@ def check_number(value, what: str, *, exact: bool = False):
     if expr.free_symbols:
         if exact:
             return expr
-        raise DataFormatError(f"{what}: {shown(value)} is symbolic; give a number (or symbolic=True)")
+        raise InputError(f"{what}: {shown(value)} is symbolic; give a number (or symbolic=True)")
     if not exact:
         z = complex(sympy.N(expr, 20))
         if z.imag:
