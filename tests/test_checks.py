@@ -407,6 +407,55 @@ def test_grounds_by_another_route(checks):
     assert grounds == [1, 2, 3, 6]
 
 
+
+def test_propagation_plans_by_another_route(checks):
+    """Exercise 2.9: of the 24 ordered choices of three central links, exactly those whose held
+    link and input lie in one unit (and are not the chain A-B itself) and whose output lies only
+    in the other unit pass; the units {A, S1, B} and {B, S2, A} are read off the description."""
+    from itertools import permutations
+
+    first, second = {"A", "S1", "B"}, {"B", "S2", "A"}
+    passed = 0
+    for held, inp, out in permutations(["S1", "S2", "A", "B"], 3):
+        right = any({held, inp} <= u and out not in u for u in (first, second) if {held, inp} != {"A", "B"})
+        result = gl.check.units_plan_design({"held": held, "input": inp, "output": out})
+        assert result.passed == right, (held, inp, out, result.message)
+        passed += right
+    assert passed == 8
+
+
+def test_simpson_designs_by_another_route(checks):
+    """Exercise 3.10: every design a direct search finds (first gear 1 + (s + r2)/r1, second
+    1 + s/r1) passes, and moving one ring by two teeth breaks it."""
+    found = 0
+    for s in range(30, 60):
+        for p1 in range(17, 40):
+            for p2 in range(17, 50):
+                r1, r2 = s + 2 * p1, s + 2 * p2
+                if max(r1, r2) > 150 or (s + r1) % 3 or (s + r2) % 3:
+                    continue
+                if not (abs((1 + F(s + r2, r1)) / F(274, 100) - 1) <= F(1, 100)
+                        and abs((1 + F(s, r1)) / F(154, 100) - 1) <= F(1, 100)):
+                    continue
+                design = {"sun": s, "front_planet": p1, "front_ring": r1, "rear_planet": p2, "rear_ring": r2}
+                assert gl.check.gains_simpson_design(design).passed, design
+                assert not gl.check.gains_simpson_design(dict(design, rear_planet=p2 + 1, rear_ring=r2 + 2)).passed
+                found += 1
+    assert found >= 5
+
+
+def test_chapters_2_and_3_have_ten_exercises_of_every_kind(checks):
+    for chapter in (2, 3):
+        infos = gl.check.catalogue(chapter)
+        assert len(infos) >= 10, f"chapter {chapter} has {len(infos)} exercises"
+        numbers = sorted(int(i["exercise"].split(".")[1]) for i in infos)
+        assert numbers == list(range(1, len(numbers) + 1)), f"chapter {chapter} numbers its exercises 1, 2, ..."
+        assert {"compute", "model", "derive", "design", "concept", "mistake", "predict"} <= {i["kind"] for i in infos}
+        for info in infos:
+            check = gl.check.get(info["name"])
+            if any(isinstance(v, (int, str)) and re.fullmatch(r"-?\d+(\.\d+)?(/\d+)?", str(v)) for v in check.given().values()):
+                assert check.variants, f"{info['exercise']} has numbers but no variants"
+
 # ----------------------------------------------------------------------------- tolerance and forms
 @pytest.mark.parametrize("answer", [F(-3, 8), "-3/8", "\u22123/8", "-0.375", -0.375, "-.375", "\u22120.375",
                                     "-0.3750", "-3/8 + 0*I", sympy.Rational(-3, 8), "-37.5/100"])
