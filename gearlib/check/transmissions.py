@@ -1,11 +1,11 @@
-"""Checks for the exercises 3.8 to 3.13 of chapter 3, unit-by-unit gains
-(``exercises/03_unit_gains.ipynb``); 3.1 to 3.7 are in :mod:`gearlib.check.gains`.
+"""Checks for the exercises 3.8 to 3.10, 3.12 and 3.13 of chapter 3, unit-by-unit gains
+(``exercises/03_unit_gains.ipynb``); the others are in :mod:`gearlib.check.gains`.
 
 Two stages in series swapped (3.8, the reducer of exercise 2.1 with other teeth), a coaxial
 triangle with a sign lost (3.9, Liu and Chen's Fig. 3(a) with other teeth), a Simpson set
-designed for two ratios (3.10), the joint torques of the robot of exercise 3.4 with numbers
-(3.11), two combinations of a Simpson three-speed's shift elements (3.12, :data:`SIMPSON_3SPEED`)
-and the lever of a power-split planetary (3.13).
+designed for two ratios (3.10), two combinations of a Simpson three-speed's shift elements
+(3.12, :data:`SIMPSON_3SPEED`) and the lever of a power-split planetary (3.13). The joint
+torques of 3.11 are in :mod:`gearlib.check.gains`, beside the robot of exercise 3.4.
 """
 
 from __future__ import annotations
@@ -20,8 +20,8 @@ from ._core import Prediction, register
 from ._design import Condition, Design
 from ._value import Mistake, Value
 
-__all__ = ["gains_series_predict", "gains_triangle_mistake", "gains_simpson_design", "gains_robot_torque",
-           "gains_shift_combinations", "gains_lever_split", "SIMPSON_3SPEED"]
+__all__ = ["gains_series_predict", "gains_triangle_mistake", "gains_simpson_design", "gains_shift_combinations",
+           "gains_lever_split", "SIMPSON_3SPEED"]
 
 
 def _mech(data):
@@ -103,12 +103,20 @@ def _triangle(n1, n2, n3, n5, n6, w1, w6) -> dict:
 
 
 def _triangle_params(rng) -> dict:
+    """Teeth and speeds whose intermediate values are whole numbers of rad/s, as a student's
+    working would show them (the answer may be a fraction)."""
     while True:
         n1, n2, n3 = rng.randint(15, 40), rng.randint(15, 40), rng.randint(15, 40)
         n5, n6 = rng.randint(30, 60), rng.randint(15, 30)
-        w1, w6 = rng.randint(5, 30), rng.randint(5, 30)
+        step1, step6 = n2 // math.gcd(n1, n2), n5 // math.gcd(n6, n5)  # whole theta_(2,4) and theta_(5,4)
+        if step1 > 30 or step6 > 30:
+            continue
+        w1, w6 = step1 * rng.randint(1, 30 // step1), step6 * rng.randint(1, 30 // step6)
         d = _triangle(n1, n2, n3, n5, n6, w1, w6)
-        if d["t54_printed"] != 0 and abs(d["t24_printed"] - d["t54_printed"]) > 1:
+        right = Fraction(-n2, n3) * (d["t24_printed"] - d["t54_printed"])
+        if (d["t24_printed"].denominator == d["t54_printed"].denominator == 1 and right.denominator <= 4
+                and d["result_printed"].denominator <= 4 and abs(right) >= 1 and d["t24_printed"] != d["t54_printed"]
+                and min(w1, w6) >= 4):
             return d
 
 
@@ -132,13 +140,13 @@ _TRIANGLE_STEPS = Choice(["1", "2", "3", "4", "5"], wrong={
              "rad/s?",
     data=_triangle(24, 36, 18, 45, 20, 12, 9),
     params=_triangle_params,
-    answer=Parts({"step": ("the wrong step", _TRIANGLE_STEPS), "speed": ("theta_(3,5)", Value("speed", mistakes=[
+    answer=Parts({"step": ("the step", _TRIANGLE_STEPS), "speed": ("theta_(3,5)", Value("speed", mistakes=[
         Mistake(lambda e, p: p["result_printed"], "That is the student's own result: correct the wrong step "
                 "first."),
         Mistake(lambda e, p: p["sum_printed"], "That is theta_(2,5), the input of KU3; go on through the pair "
                 "(2, 3)."),
-    ], generic="Write theta_(2,5) = theta_(2,4) + theta_(4,5) and remember theta_(4,5) = -theta_(5,4); then "
-               "multiply by e_(2,3)."))}),
+    ], generic="Check each step against the definition theta_(u,v) = omega_u - omega_v: write every relative "
+               "speed as a difference of absolute speeds."))}),
 )
 def gains_triangle_mistake(n1, n2, n3, n5, n6, w1, w6, t24_printed, t54_printed, sum_printed, result_printed):
     from ..mechanism.kinematics import speeds
@@ -222,79 +230,6 @@ def _simpson_targets(rng) -> dict:
 )
 def gains_simpson_design(first, second):
     return None
-
-
-# ----------------------------------------------------------------------------- 3.11
-_RATIOS = ("e_4_5", "e_5_7", "e_7_3", "e_8_9", "e_9_3")
-
-
-def _robot_numbers(values: dict):
-    from .gains import EXERCISE_ROBOT
-
-    data = dict(EXERCISE_ROBOT)
-    data["gear_pairs"] = [dict(gp, ratio=values[gp["ratio"]]) for gp in EXERCISE_ROBOT["gear_pairs"]]
-    return _mech(data)
-
-
-def _torque_parts(p) -> dict:
-    e = {k: Fraction(p[k]) for k in _RATIOS}
-    line4 = 1 / (e["e_4_5"] * e["e_5_7"] * e["e_7_3"])
-    line8 = 1 / (e["e_8_9"] * e["e_9_3"])
-    return {"e": e, "line4": line4, "line8": line8}
-
-
-def _torque_params(rng) -> dict:
-    while True:
-        out = {k: f"{rng.choice((-1, 1)) * rng.randint(12, 48)}/{rng.randint(12, 48)}" for k in _RATIOS}
-        out.update(xi1=rng.randint(2, 30), xi4=rng.randint(2, 30), xi8=rng.randint(2, 30))
-        t = _torque_parts(out)
-        if abs(t["line4"] * out["xi4"] + t["line8"] * out["xi8"]) > Fraction(1, 2):
-            return out
-
-
-def _transpose_row3(p) -> Fraction:
-    e = _torque_parts(p)["e"]
-    return p["xi1"] + p["xi4"] / e["e_8_9"] + p["xi8"] / (e["e_8_9"] * e["e_9_3"])
-
-
-def _lc_gains(p) -> Fraction:
-    e = _torque_parts(p)["e"]
-    return p["xi4"] * e["e_4_5"] * e["e_5_7"] * e["e_7_3"] + p["xi8"] * e["e_8_9"] * e["e_9_3"]
-
-
-def _no_idler(p) -> Fraction:
-    e = _torque_parts(p)["e"]
-    return p["xi4"] / (e["e_4_5"] * e["e_7_3"]) + p["xi8"] / (e["e_8_9"] * e["e_9_3"])
-
-
-@register(
-    "gains_robot_torque", exercise="3.11", title="Joint torques of a geared robot: tau = A xi", stars=2,
-    minutes=20, kind="compute",
-    question="The robot of exercise 3.4 (gl.check.gains.EXERCISE_ROBOT) gets numbers: e_4_5 = {e_4_5}, e_5_7 = "
-             "{e_5_7}, e_7_3 = {e_7_3}, e_8_9 = {e_8_9}, e_9_3 = {e_9_3}. Its actuators 1, 4 and 8 apply the "
-             "torques xi_1 = {xi1}, xi_4 = {xi4} and xi_8 = {xi8} N m. What torque tau_3, in N m, results at the "
-             "joint of the end-effector 3? Give the number.",
-    data={"e_4_5": "-5/4", "e_5_7": "-3/4", "e_7_3": "6/5", "e_8_9": "-4/5", "e_9_3": "5/3", "xi1": 8, "xi4": 7,
-          "xi8": 5},
-    params=_torque_params,
-    answer=Value("number", unit=None, mistakes=[
-        Mistake(lambda e, p: _transpose_row3(p), "That is row 3 of A^T xi: the torques follow tau = A xi (rows of "
-                "A: joints; columns: actuators), the transpose of the map from joint angles to actuator angles."),
-        Mistake(lambda e, p: _lc_gains(p), "Those are Liu and Chen's ratios, output over input: Chen's forward "
-                "gains run the other way (the unit's input over its output)."),
-        Mistake(lambda e, p: _no_idler(p), "The idler 5 is missing: actuator 4 reaches gear 7 through it, so its "
-                "line's first unit has two meshes."),
-        Mistake(lambda e, p: [_torque_parts(p)["line4"] * p["xi4"], _torque_parts(p)["line8"] * p["xi8"]],
-                "That is one actuator's share: both actuators 4 and 8 reach joint 3."),
-    ], generic="Row 3 of A holds the running products of each line's forward gains up to joint 3: tau_3 = "
-               "A_3,1 xi_1 + A_3,4 xi_4 + A_3,8 xi_8."),
-)
-def gains_robot_torque(e_4_5, e_5_7, e_7_3, e_8_9, e_9_3, xi1, xi4, xi8):
-    from ..gains.robots import geared_robot
-
-    values = {k: sympy.Rational(v) for k, v in zip(_RATIOS, (e_4_5, e_5_7, e_7_3, e_8_9, e_9_3))}
-    robot = geared_robot(_robot_numbers(values), end_effector=3)
-    return robot.joint_torques([xi1, xi4, xi8], method="exact")[2]
 
 
 # ----------------------------------------------------------------------------- 3.12

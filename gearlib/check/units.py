@@ -234,7 +234,7 @@ _CRCR_STEPS = Choice(["1", "2", "3", "4", "5"], wrong={
              "carrier; (3) with their carriers: {A, S1, P1, B} and {B, S2, P2, A}; (4) the common links A and B "
              "are coaxial, so in each unit step 4 joins them by a g-g edge; (5) both units are therefore K4-1S. "
              "Which step is wrong, and what is the right catalogue type of the unit whose carrier is A?",
-    answer=Parts({"step": ("the wrong step", _CRCR_STEPS), "type": ("the type", _crcr_type_choice())}),
+    answer=Parts({"step": ("the step", _CRCR_STEPS), "type": ("the type", _crcr_type_choice())}),
 )
 def units_mistake_crcr():
     unit = next(u for u in _crcr_units().units if u.carrier == 3)
@@ -285,7 +285,8 @@ def _dual_truth(reference, params):
         "fges": ("the number of FGEs", Value("count", generic="An FGE is one planet set with its carrier and the "
                                              "central gears its planets mesh: count the planet sets.")),
         "units": ("the number of units", Value("count", generic="A unit is a carrier with a connected tree of gear "
-                                               "pairs on it: follow the meshes from one sun to the other.")),
+                                               "pairs on it: list the carrier of each gear pair, then see which "
+                                               "meshes connect.")),
         "reason": ("the reason", Choice(_DUAL_REASONS, wrong={
             "B": "The planets' axes do not matter: relative to the carrier every axis is fixed, and what makes a "
                  "unit is a connected tree of gear pairs on one carrier.",
