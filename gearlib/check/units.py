@@ -178,8 +178,8 @@ def _crcr_teeth(rng) -> dict:
 @register(
     "units_model_crcr", exercise="2.5", title="From a description to data: two planetaries, carriers and rings "
     "crossed", stars=2, minutes=20, kind="model",
-    question="A gear set of two simple planetaries in which each carrier holds the other's ring (many four-speed "
-             "automatic transmissions use it). The front sun S1 ({s1} teeth) meshes the front planets P1 ({p1} "
+    question="A gear set of two simple planetaries in which each carrier holds the other's ring (a compound used in "
+             "four-speed automatic transmissions). The front sun S1 ({s1} teeth) meshes the front planets P1 ({p1} "
              "teeth), which turn on the carrier A and mesh the front ring ({r1} teeth, internal). The front ring "
              "is one link, B, with the rear carrier. The rear sun S2 ({s2} teeth) meshes the rear planets P2 "
              "({p2} teeth), which turn on B and mesh the rear ring ({r2} teeth, internal), part of A. S1, S2, A "
