@@ -49,6 +49,34 @@ def _stepped_wrong(change):
     return data
 
 
+def _crcr_model():
+    # the set of exercise 2.5 with the reader's own link ids and order
+    return {"links": {10: "A", 11: "B", 12: "S1", 13: "S2", 14: "P1", 15: "P2"},
+            "turning_pairs": [[10, 12, "x"], [10, 11, "x"], [11, 13, "x"], [10, 14, "p"], [11, 15, "q"]],
+            "gear_pairs": [{"gears": [12, 14], "teeth": [27, 24]}, {"gears": [14, 11], "teeth": [24, 75], "type": "internal"},
+                           {"gears": [13, 15], "teeth": [33, 21]}, {"gears": [15, 10], "teeth": [21, 75], "type": "internal"}]}
+
+
+def _crcr_wrong(change):
+    data = _crcr_model()
+    change(data)
+    return data
+
+
+def _wolfrom_model():
+    # the reducer of exercise 3.5 with the reader's own link ids and order
+    return {"links": {40: "carrier", 20: "housing", 30: "output ring", 10: "sun", 50: "planet"},
+            "turning_pairs": [[20, 10, "z"], [20, 30, "z"], [10, 40, "z"], [40, 50, "p"]],
+            "gear_pairs": [{"gears": [10, 50], "teeth": [18, 27]}, {"gears": [50, 20], "teeth": [27, 72], "type": "internal"},
+                           {"gears": [50, 30], "teeth": [24, 69], "type": "internal"}]}
+
+
+def _wolfrom_wrong(change):
+    data = _wolfrom_model()
+    change(data)
+    return data
+
+
 # name -> (reference worked by hand, [typical wrong answers])
 ANSWERS = {
     # ---------------------------------------------------------------- 0 introduction
@@ -107,6 +135,27 @@ ANSWERS = {
     "unit_type_series": ("K4-1S", ["K4-1", "K5-2", "K3-1"]),
     "linkage_series": (("two-link chain", "a"), [("coaxial triangle", "B"), ("2-link chain", "C")]),
     "atlas_single_unit_chains": (None, [81, 54, 7]),  # counted in test_single_unit_chains_by_another_route
+    "units_model_crcr": (_crcr_model(), [
+        _crcr_wrong(lambda d: d["gear_pairs"][1].pop("type")),                          # front ring external
+        _crcr_wrong(lambda d: d["turning_pairs"].__setitem__(4, [10, 15, "q"])),         # P2 on A, not on B
+        _crcr_wrong(lambda d: d["gear_pairs"][3].update(gears=[15, 11]))]),              # P2 meshes B: loop
+    # step 4 joins common *gears*; in the unit of carrier A, B is its only common gear: sun-planet-ring, K4-1
+    "units_mistake_crcr": ({"step": "4", "type": "K4-1"},
+                           [{"step": "5", "type": "K4-1S"}, ("4", "K4-1S"), ("3", "K4-1")]),
+    # FGEs: planet set 2 (suns 1, ring 3) and planet set 5 (sun 6, ring 3); units: one tree 1-2-3-5-6 on carrier 4
+    "units_fge_predict": ({"fges": 2, "units": 1, "reason": "A"},
+                          [(2, 2, "B"), (1, 1, "A"), {"fges": 2, "units": 1, "reason": "D"}]),
+    # omega_0 - omega_5 = e_3_4 e_4_0 (omega_3 - omega_5)
+    "units_block_derive": ("(omega_0 - e_3_4*e_4_0*omega_3)/(1 - e_3_4*e_4_0)",
+                           ["-e_3_4*e_4_0*omega_3/(1 - e_3_4*e_4_0)", "(omega_3 - e_3_4*e_4_0*omega_0)/(1 - e_3_4*e_4_0)",
+                            "e_3_4*e_4_0*omega_3"]),
+    # units {A, S1, P1, B} and {B, S2, P2, A}: A held and S1 driven solve the first; S2 only in the second
+    "units_plan_design": ({"held": "A", "input": "S1", "output": "S2"},
+                          [{"held": "A", "input": "S1", "output": "B"}, {"held": "S2", "input": "S1", "output": "A"},
+                           {"held": "P1", "input": "S1", "output": "S2"}]),
+    # a star (the planet meshes 1, 0 and 5) with all three outer gears on axis a; no common links
+    "units_star_type": ("K5-7", ["K5-7D", "K5-4", "K4-1"]),
+    "units_three_planets": ({"units": 1, "reason": "A"}, [(3, "B"), (1, "D"), (1, "C")]),
     # ---------------------------------------------------------------- 3 unit-by-unit gains
     # E_25 = (-34/22)(22/78) = -17/39; Rule 2: E_25 - 1
     "gain_rule2": ({"gain": F(-56, 39), "rule": "2"}, [(F(-17, 39), "2"), (F(-56, 39), "1"), (F(56, 39), "2")]),
@@ -120,6 +169,31 @@ ANSWERS = {
                          [[[1, 0, 0], [1, "1/(e_4_5*e_5_7)", "1/(e_4_5*e_5_7*e_7_3)"], [1, "1/e_8_9", "1/(e_8_9*e_9_3)"]],
                           [[1, 1, 1], [0, "e_4_5*e_5_7", "e_8_9"], [0, "e_4_5*e_5_7*e_7_3", "e_8_9*e_9_3"]],
                           [[1, 1], [0, "1/e_8_9"]]]),
+    # E_05 = (72/27)(24/69) = 64/69, E_01 = (72/27)(-27/18) = -4; Rule 5: (64/69 - 1)/(-4 - 1)
+    "gains_model_wolfrom": (_wolfrom_model(), [
+        _wolfrom_wrong(lambda d: d["gear_pairs"][2].update(teeth=[27, 69])),              # planet not stepped
+        _wolfrom_wrong(lambda d: d["gear_pairs"][2].pop("type")),                        # output ring external
+        _wolfrom_wrong(lambda d: d["gear_pairs"][1].pop("type"))]),                       # fixed ring external
+    "gains_wolfrom_rule": ({"rule": "5", "gain": F(1, 69)}, [("5", F(-1, 115)), ("1", F(1, 69)), ("5", F(-1, 69))]),
+    # rear unit, 4 held: omega_1 = -(78/34) omega_3; front unit: omega_3 (72 + 34) = 72 omega_2 + 34 omega_1
+    "gains_simpson_first": (F(9, 23), [F(36, 53), F(-17, 39), F(72, 28)]),
+    # (21/102)(28/94), in either order
+    "gains_series_predict": (F(49, 799), [F(7, 34), F(14, 47), F(-49, 799)]),
+    # theta_25 = theta_24 - theta_54 = -8 + 4; theta_35 = (-36/18)(-4)
+    "gains_triangle_mistake": ({"step": "3", "speed": 8}, [{"step": "5", "speed": 24}, ("3", 24), ("4", 8)]),
+    # second gear 1 + 44/82 = 1.537, first 1 + 144/82 = 2.756; (44 + 82)/3 and (44 + 100)/3 whole
+    "gains_simpson_design": ({"sun": 44, "front_planet": 19, "front_ring": 82, "rear_planet": 28, "rear_ring": 100},
+                             [{"sun": 44, "front_planet": 19, "front_ring": 82, "rear_planet": 28, "rear_ring": 101},
+                              {"sun": 30, "front_planet": 18, "front_ring": 66, "rear_planet": 18, "rear_ring": 66},
+                              {"sun": 46, "front_planet": 19, "front_ring": 84, "rear_planet": 28, "rear_ring": 102}]),
+    # row 3 of A: 1/(e45 e57 e73) = 8/9 and 1/(e89 e93) = -3/4; 7 (8/9) + 5 (-3/4)
+    "gains_robot_torque": (F(89, 36), [F(-9, 2), F(29, 24), F(56, 9)]),
+    # D+B: input joined to the held sun; B+L: both sets stand, the input shaft is free
+    "gains_shift_combinations": ({"D+B": "tie-up", "B+L": "output held", "reason": "A"},
+                                 [{"D+B": "over-constrained", "B+L": "output held", "reason": "C"},
+                                  ("gear", "tie-up", "B"), ("tie-up", "under-constrained", "A")]),
+    # lever: carrier in the middle, (30 + 78) omega_c = 30 omega_s + 78 omega_r
+    "gains_lever_split": (F(13931, 5), [F(-13931, 5), F(108 * 1650 - 30 * 1213, 78), F(30 * 1650 + 78 * 1213, 108)]),
     # ---------------------------------------------------------------- 4 complex adjacency
     "adjacency_planet_ratio": ("5/2*exp(I*pi/3)", [-2.5, 2.5, "2/5*exp(-I*pi/3)", "-5/2*exp(I*pi/3)", 1.25]),
     # carrier 20*30/120 = 5 Hz; sun relative 15 Hz; 30 teeth
@@ -332,6 +406,55 @@ def test_grounds_by_another_route(checks):
     grounds = sorted(k for k, v in _coaxial_neighbours(chain).items() if len(v) >= 3)
     assert grounds == [1, 2, 3, 6]
 
+
+
+def test_propagation_plans_by_another_route(checks):
+    """Exercise 2.9: of the 24 ordered choices of three central links, exactly those whose held
+    link and input lie in one unit (and are not the chain A-B itself) and whose output lies only
+    in the other unit pass; the units {A, S1, B} and {B, S2, A} are read off the description."""
+    from itertools import permutations
+
+    first, second = {"A", "S1", "B"}, {"B", "S2", "A"}
+    passed = 0
+    for held, inp, out in permutations(["S1", "S2", "A", "B"], 3):
+        right = any({held, inp} <= u and out not in u for u in (first, second) if {held, inp} != {"A", "B"})
+        result = gl.check.units_plan_design({"held": held, "input": inp, "output": out})
+        assert result.passed == right, (held, inp, out, result.message)
+        passed += right
+    assert passed == 8
+
+
+def test_simpson_designs_by_another_route(checks):
+    """Exercise 3.10: every design a direct search finds (first gear 1 + (s + r2)/r1, second
+    1 + s/r1) passes, and moving one ring by two teeth breaks it."""
+    found = 0
+    for s in range(30, 60):
+        for p1 in range(17, 40):
+            for p2 in range(17, 50):
+                r1, r2 = s + 2 * p1, s + 2 * p2
+                if max(r1, r2) > 150 or (s + r1) % 3 or (s + r2) % 3:
+                    continue
+                if not (abs((1 + F(s + r2, r1)) / F(274, 100) - 1) <= F(1, 100)
+                        and abs((1 + F(s, r1)) / F(154, 100) - 1) <= F(1, 100)):
+                    continue
+                design = {"sun": s, "front_planet": p1, "front_ring": r1, "rear_planet": p2, "rear_ring": r2}
+                assert gl.check.gains_simpson_design(design).passed, design
+                assert not gl.check.gains_simpson_design(dict(design, rear_planet=p2 + 1, rear_ring=r2 + 2)).passed
+                found += 1
+    assert found >= 5
+
+
+def test_chapters_2_and_3_have_ten_exercises_of_every_kind(checks):
+    for chapter in (2, 3):
+        infos = gl.check.catalogue(chapter)
+        assert len(infos) >= 10, f"chapter {chapter} has {len(infos)} exercises"
+        numbers = sorted(int(i["exercise"].split(".")[1]) for i in infos)
+        assert numbers == list(range(1, len(numbers) + 1)), f"chapter {chapter} numbers its exercises 1, 2, ..."
+        assert {"compute", "model", "derive", "design", "concept", "mistake", "predict"} <= {i["kind"] for i in infos}
+        for info in infos:
+            check = gl.check.get(info["name"])
+            if any(isinstance(v, (int, str)) and re.fullmatch(r"-?\d+(\.\d+)?(/\d+)?", str(v)) for v in check.given().values()):
+                assert check.variants, f"{info['exercise']} has numbers but no variants"
 
 # ----------------------------------------------------------------------------- tolerance and forms
 @pytest.mark.parametrize("answer", [F(-3, 8), "-3/8", "\u22123/8", "-0.375", -0.375, "-.375", "\u22120.375",
