@@ -76,6 +76,9 @@ ANSWERS = {
     "intro_star": (F(-11, 36), [F(11, 36), F(-22, 25)]),
     "intro_willis_frame": ({"link": "the carrier", "reason": "A"},
                            [{"link": "the frame", "reason": "A"}, ("the carrier", "D"), ("gear a", "C")]),
+    # one module: N_ring = 21 + 2 * 27 = 75; ring held: 21 / (21 + 75)
+    "intro_data_sheet": ({"reason": "A", "ring": 75, "ratio": F(7, 32)},
+                         [("B", 48, F(7, 31)), ("A", 72, F(7, 31)), ("A", 75, F(-7, 32))]),
     # ---------------------------------------------------------------- 1 graph representation
     # 4 holds 2 on b and is coaxial with 5 through 4-1-0-5 on a
     "graph_carrier": (4, [0, 5, "1"]),
@@ -322,12 +325,14 @@ def test_every_check_is_numbered_titled_and_marked(checks):
     per_chapter = {}
     for info in gl.check.catalogue():
         per_chapter.setdefault(int(info["chapter"]), []).append(info)
-    assert len(per_chapter[0]) >= 3 and len(per_chapter[1]) >= 10
-    for chapter in (0, 1):
+    assert len(per_chapter[0]) >= 3 and len(per_chapter[1]) >= 10 and len(per_chapter[6]) >= 10
+    for chapter in (0, 1, 6):
         numbers = sorted(int(i["exercise"].split(".")[1]) for i in per_chapter[chapter])
         assert numbers == list(range(1, len(numbers) + 1)), f"chapter {chapter} numbers its exercises 1, 2, ..."
-    kinds_ch1 = {i["kind"] for i in per_chapter[1]}
-    assert {"compute", "model", "derive", "design", "concept", "mistake", "predict"} <= kinds_ch1
+    for chapter in (1, 6):
+        kinds = {i["kind"] for i in per_chapter[chapter]}
+        assert {"compute", "model", "derive", "design", "concept", "mistake", "predict"} <= kinds, chapter
+    assert len({i["kind"] for i in per_chapter[0]}) >= 5
 
 
 # ----------------------------------------------------------------------------- independent counts
