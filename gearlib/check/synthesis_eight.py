@@ -85,6 +85,8 @@ class _Assignment(Design):
     """A design whose fields may be a list of links (kind ``"links"``)."""
 
     def _value(self, key, v):
+        if v is None:
+            raise Unreadable(f"no answer yet: replace `None` with the {key}")
         if self.fields[key] == "links":
             links = tuple(_link(x) for x in _collection(v, "a list of link ids"))
             if len(links) != 3 or len(set(links)) != 3:
