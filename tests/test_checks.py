@@ -77,6 +77,20 @@ def _wolfrom_wrong(change):
     return data
 
 
+def _centre_model():
+    # the centre differential of exercise 6.8 with the reader's own link ids and order
+    return {"links": {10: "sun", 20: "ring", 30: "inner planet", 40: "outer planet", 50: "carrier", 90: "housing"},
+            "turning_pairs": [[90, 50, "a"], [90, 10, "a"], [90, 20, "a"], [50, 30, "p"], [50, 40, "q"]],
+            "gear_pairs": [{"gears": [10, 30], "teeth": [30, 17]}, {"gears": [40, 30], "teeth": [19, 17]},
+                           {"gears": [40, 20], "teeth": [19, 78], "type": "internal"}]}
+
+
+def _centre_wrong(change):
+    data = _centre_model()
+    change(data)
+    return data
+
+
 # name -> (reference worked by hand, [typical wrong answers])
 ANSWERS = {
     # ---------------------------------------------------------------- 0 introduction
@@ -90,6 +104,9 @@ ANSWERS = {
     "intro_star": (F(-11, 36), [F(11, 36), F(-22, 25)]),
     "intro_willis_frame": ({"link": "the carrier", "reason": "A"},
                            [{"link": "the frame", "reason": "A"}, ("the carrier", "D"), ("gear a", "C")]),
+    # one module: N_ring = 21 + 2 * 27 = 75; ring held: 21 / (21 + 75)
+    "intro_data_sheet": ({"reason": "A", "ring": 75, "ratio": F(7, 32)},
+                         [("B", 48, F(7, 31)), ("A", 72, F(7, 31)), ("A", 75, F(-7, 32))]),
     # ---------------------------------------------------------------- 1 graph representation
     # 4 holds 2 on b and is coaxial with 5 through 4-1-0-5 on a
     "graph_carrier": (4, [0, 5, "1"]),
@@ -225,6 +242,36 @@ ANSWERS = {
     # ground 1: omega_7 = e37 omega_3 = e67 omega_6
     "synth_two_constraints": ({"ground": 1, "terminals": [3, 6, 7], "reason": "A"},
                               [(1, [3, 6, 7], "D"), (2, [1, 3, 6], "A"), (1, [2, 3, 6], "A")]),
+    # a one-dof four-link chain (rotation graphs with 3 and 2 kinds of link) and a gear pair on a
+    # carrier (2 kinds) share one link: (3 + 2) * 2; counted in test_fractionated_six_by_another_route
+    "synth_fractionated_six": (10, [12, 42, 3]),
+    "diff_model": (_centre_model(), [
+        _centre_wrong(lambda d: d["gear_pairs"][2].pop("type")),                          # ring as an external gear
+        _centre_wrong(lambda d: d["gear_pairs"].__setitem__(0, {"gears": [10, 40], "teeth": [30, 19]})),  # wrong planet
+        _centre_wrong(lambda d: d["turning_pairs"].__setitem__(4, [90, 30, "q"]))]),      # planet on the housing
+    # relative to the carrier omega_r - omega_c = (N_s/N_r)(omega_s - omega_c): N_s w_s - N_r w_r + (N_r - N_s) w_c = 0;
+    # torques in proportion to the coefficients: 30 / (78 - 30)
+    "diff_torque_split": ({"ratio": F(5, 8), "reason": "A"},
+                          [(F(8, 5), "A"), (F(5, 13), "A"), (F(5, 8), "D"), (1, "B")]),
+    # N_r = 2 N_s; (84 - 42)/3 = 14; centres 29 and 34 apart 16 (a triangle); 84 - 42 - 32 = 10 > 4
+    "diff_equal_split": ({"sun": 42, "inner": 16, "outer": 16, "ring": 84},
+                         [{"sun": 30, "inner": 17, "outer": 19, "ring": 78}, {"sun": 40, "inner": 16, "outer": 16, "ring": 80},
+                          {"sun": 42, "inner": 20, "outer": 20, "ring": 84}]),
+    # links 3, 4, 5 lie in one circuit each (N3: terminals); the only link coaxial with all three is 2
+    "synth_design_dgm": ({"ground": 2, "terminals": [5, 3, 4]},
+                         [{"ground": 1, "terminals": [3, 4, 5]}, {"ground": 2, "terminals": [1, 4, 5]},
+                          {"ground": 2, "terminals": [3, 4, 8]}]),
+    # no gear pair (6, 7); solved by sympy in test_misprint_by_another_route
+    "synth_misprint": ({"symbol": "e_6_7", "constraint": "(e_2_7 - e_5_7)*(e_3_8 - e_6_8)*omega_4 + e_1_4*e_5_7*(e_3_8 - "
+                        "e_6_8)*omega_5 + e_1_4*e_2_7*e_6_8*omega_6"},
+                       [("e_6_8", "(e_2_7 - e_5_7)*(e_3_8 - e_6_8)*omega_4 + e_1_4*e_5_7*(e_3_8 - e_6_8)*omega_5 + "
+                         "e_1_4*e_2_7*e_6_8*omega_6"),
+                        ("e_6_7", "(e_2_7 - e_5_7)*(e_3_8 - e_6_7)*omega_4 + e_1_4*e_5_7*(e_3_8 - e_6_8)*omega_5 + "
+                         "e_1_4*e_2_7*e_6_8*omega_6"),
+                        ("e_6_7", "(e_2_7 - e_5_7)*(e_3_8 - e_6_8)*omega_4 - e_1_4*e_5_7*(e_3_8 - e_6_8)*omega_5 + "
+                         "e_1_4*e_2_7*e_6_8*omega_6")]),
+    # link 3 turns on link 2 (axis d); it lies in one circuit, so it must be a terminal (N3)
+    "synth_left_out": ({"link": 3, "terminals": [4, 1, 3]}, [(7, [1, 4, 7]), (3, [3, 4, 8]), (6, [1, 3, 4])]),
 }
 
 
@@ -295,7 +342,8 @@ def test_wrong_answers_get_a_hint_not_the_answer(checks, name):
 def _plain(ref):
     """A reference as the representations of check_tools know it: expressions as sympy, a
     mechanism (a model's answer, many right ones) as nothing."""
-    if isinstance(ref, str) and re.search(r"[a-z]_\d|exp|\d", ref) and not re.fullmatch(r"K\d.*|\d-link.*", ref):
+    if isinstance(ref, str) and re.search(r"[a-z]_\d|exp|\d", ref) and not re.fullmatch(r"K\d.*|\d-link.*|[a-z]+(_\d+)+", ref):
+        # (a single symbol's name, "e_6_7", is an option of a choice: kept as text)
         try:
             return sympy.sympify(ref)
         except (sympy.SympifyError, SyntaxError, TypeError):
@@ -351,12 +399,14 @@ def test_every_check_is_numbered_titled_and_marked(checks):
     per_chapter = {}
     for info in gl.check.catalogue():
         per_chapter.setdefault(int(info["chapter"]), []).append(info)
-    assert len(per_chapter[0]) >= 3 and len(per_chapter[1]) >= 10
-    for chapter in (0, 1):
+    assert len(per_chapter[0]) >= 3 and len(per_chapter[1]) >= 10 and len(per_chapter[6]) >= 10
+    for chapter in (0, 1, 6):
         numbers = sorted(int(i["exercise"].split(".")[1]) for i in per_chapter[chapter])
         assert numbers == list(range(1, len(numbers) + 1)), f"chapter {chapter} numbers its exercises 1, 2, ..."
-    kinds_ch1 = {i["kind"] for i in per_chapter[1]}
-    assert {"compute", "model", "derive", "design", "concept", "mistake", "predict"} <= kinds_ch1
+    for chapter in (1, 6):
+        kinds = {i["kind"] for i in per_chapter[chapter]}
+        assert {"compute", "model", "derive", "design", "concept", "mistake", "predict"} <= kinds, chapter
+    assert len({i["kind"] for i in per_chapter[0]}) >= 5
 
 
 # ----------------------------------------------------------------------------- independent counts
@@ -455,6 +505,112 @@ def test_chapters_2_and_3_have_ten_exercises_of_every_kind(checks):
             check = gl.check.get(info["name"])
             if any(isinstance(v, (int, str)) and re.fullmatch(r"-?\d+(\.\d+)?(/\d+)?", str(v)) for v in check.given().values()):
                 assert check.variants, f"{info['exercise']} has numbers but no variants"
+
+
+def _rotation_graph(circuits):
+    """A chain's gear pairs as a networkx graph: a node per link and per gear pair, the pair
+    joined to its two gears ("gear") and to its carrier ("carrier")."""
+    import networkx as nx
+
+    g = nx.Graph()
+    for k, (a, b, c) in enumerate(circuits):
+        g.add_edge(("pair", k), ("link", a), kind="gear")
+        g.add_edge(("pair", k), ("link", b), kind="gear")
+        g.add_edge(("pair", k), ("link", c), kind="carrier")
+    return g
+
+
+def test_fractionated_six_by_another_route(checks):
+    """Two one-dof chains, four links and three, share one link (every way, deduplicated by
+    networkx): the fractionated two-dof six-link rotation graphs."""
+    import networkx as nx
+
+    fours = [[(1, 2, 3), (2, 4, 3)], [(1, 3, 2), (2, 4, 1)]]  # three gears on a carrier; two carriers carrying each other
+    three = [(5, 6, 7)]
+    found = []
+    for four in fours:
+        for shared in (1, 2, 3, 4):
+            for other in (5, 6, 7):
+                glued = four + [tuple(shared if x == other else x for x in three[0])]
+                g = _rotation_graph(glued)
+                if not any(nx.is_isomorphic(g, h, edge_match=lambda x, y: x["kind"] == y["kind"]) for h in found):
+                    found.append(g)
+    assert len(found) == 10
+    assert gl.check.synth_fractionated_six(len(found)).passed
+
+
+def test_the_eight_link_chains_are_the_atlas_chains(checks):
+    from gearlib.check.synthesis_eight import EIGHT_LINK
+
+    atlas = {m.name: m for m in gl.atlas.geared_chains(8, 2)}
+    for name, data in EIGHT_LINK.items():
+        mine = gl.Mechanism.from_dict(data)
+        assert mine.turning_pairs == atlas[name].turning_pairs, name
+        assert [(gp.gears, gp.carrier) for gp in mine.gear_pairs] == \
+            [(gp.gears, gp.carrier) for gp in atlas[name].gear_pairs], name
+
+
+def test_design_dgm_and_left_out_link_by_another_route(checks):
+    from gearlib.check.synthesis_eight import EIGHT_LINK
+
+    def one_circuit(data):  # links in a single fundamental circuit (as a gear or as the carrier)
+        count = {}
+        for gp in data["gear_pairs"]:
+            for x in (*gp["gears"], gp["carrier"]):
+                count[x] = count.get(x, 0) + 1
+        return {x for x, n in count.items() if n == 1}
+
+    data = EIGHT_LINK["GKC 8-2-324"]
+    terminals = one_circuit(data)
+    near = _coaxial_neighbours(gl.Mechanism.from_dict(data))
+    grounds = [g for g in near if terminals <= near[g]]
+    assert terminals == {3, 4, 5} and grounds == [2]
+    assert gl.check.synth_design_dgm({"ground": 2, "terminals": sorted(terminals)}).passed
+    data = EIGHT_LINK["GKC 8-2-667"]
+    (missing,) = _coaxial_neighbours(gl.Mechanism.from_dict(data))[2] - {1, 4, 7, 8}
+    assert missing == 3 and one_circuit(data) == {3, 4}
+    assert gl.check.synth_left_out({"link": missing, "terminals": [1, 3, 4]}).passed
+
+
+def test_misprint_by_another_route(checks):
+    from gearlib.check.synthesis_eight import _PRINTED, EIGHT_LINK
+
+    w = {k: S(f"omega_{k}") for k in range(1, 9)}
+    w[3] = 0  # the ground
+    rows = [w[b] - w[c] - S(f"e_{a}_{b}") * (w[a] - w[c]) for a, b, c in
+            ((gp["gears"][0], gp["gears"][1], gp["carrier"]) for gp in EIGHT_LINK["GKC 8-2-161"]["gear_pairs"])]
+    sol = sympy.solve(rows[:4], [w[1], w[2], w[7], w[8]], dict=True)[0]
+    mine = sympy.factor(sympy.numer(sympy.together(rows[4].subs(sol))))
+    assert gl.check.synth_misprint({"symbol": "e_6_7", "constraint": mine}).passed
+    printed = sympy.sympify(_PRINTED)
+    assert not gl.check.synth_misprint({"symbol": "e_6_7", "constraint": printed}).passed
+    assert printed.subs(S("e_6_7"), S("e_6_8")) != printed  # one symbol away from ...
+    assert gl.check.synth_misprint({"symbol": "e_6_7", "constraint": printed.subs(S("e_6_7"), S("e_6_8"))}).passed
+
+
+def test_each_broken_design_condition_is_named(checks):
+    cases = {
+        "tooth numbers": {"sun": 13, "inner": 14, "outer": 14, "ring": 26},
+        "equal torque": {"sun": 30, "inner": 17, "outer": 19, "ring": 78},
+        "planets mesh": {"sun": 42, "inner": 14, "outer": 14, "ring": 200},
+        "clear of sun and ring": {"sun": 42, "inner": 20, "outer": 20, "ring": 84},
+        "equal spacing": {"sun": 40, "inner": 16, "outer": 16, "ring": 80},
+    }
+    for condition, design in cases.items():
+        result = gl.check.diff_equal_split(design)
+        assert not result.passed and condition in result.details["broken"], (condition, result.message)
+    # five pairs: planets 20 teeth on sun 45 clear the central gears, but overlap the next pair
+    five = next(f"v{k}" for k in range(100) if gl.check.diff_equal_split.given(f"v{k}")["pairs"] == 5)
+    result = gl.check.diff_equal_split({"sun": 45, "inner": 20, "outer": 20, "ring": 90}, variant=five)
+    assert not result.passed and result.details["broken"] == ["neighbouring pairs"], result.message
+    assert gl.check.diff_equal_split({"sun": 45, "inner": 20, "outer": 20, "ring": 90}).passed  # three pairs fit
+    for condition, design in {"N2": {"ground": 3, "terminals": [2, 4, 5]}, "C3": {"ground": 1, "terminals": [3, 4, 5]},
+                              "one constraint (C1)": {"ground": 1, "terminals": [5, 6, 7]},
+                              "every terminal in it": {"ground": 2, "terminals": [3, 4, 8]},
+                              "no redundant link": {"ground": 2, "terminals": [1, 4, 5]}}.items():
+        result = gl.check.synth_design_dgm(design)
+        assert not result.passed and result.details["broken"][0] == condition, (condition, result.message)
+
 
 # ----------------------------------------------------------------------------- tolerance and forms
 @pytest.mark.parametrize("answer", [F(-3, 8), "-3/8", "\u22123/8", "-0.375", -0.375, "-.375", "\u22120.375",

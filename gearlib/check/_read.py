@@ -190,7 +190,8 @@ def read(answer, *, names: bool = False) -> Reading:
             raise Unreadable("the answer is not a finite number (NaN or infinity)")
         return read_text(str(answer), units=False)
     if isinstance(answer, sympy.Basic):
-        if isinstance(answer, (sympy.core.relational.Relational, sympy.logic.boolalg.Boolean)):
+        if isinstance(answer, sympy.core.relational.Relational) or (
+                isinstance(answer, sympy.logic.boolalg.Boolean) and not isinstance(answer, sympy.Expr)):  # a Symbol is both
             raise Unreadable("give an expression, not an equation or a condition (drop the `Eq(...)`)")
         if isinstance(answer, sympy.MatrixBase) or not isinstance(answer, sympy.Expr):
             raise Unreadable("this asks for a single value")
