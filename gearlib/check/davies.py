@@ -1,21 +1,25 @@
-"""Checks for the exercises of chapter 5, Davies' efficiency (``exercises/05_davies_efficiency.ipynb``).
+"""Checks for the exercises 5.1 to 5.6 and 5.11 of chapter 5, Davies' efficiency
+(``exercises/05_davies_efficiency.ipynb``); exercises 5.7 to 5.10 and 5.12 to 5.15 are in
+:mod:`gearlib.check.efficiency`.
 
 Efficiencies are checked as efficiencies (exchanged input and output, the loss instead of the
 efficiency, one mesh or the product of the meshes), the friction coefficient as a length.
-Humpage's reducer (5.5) has a different efficiency per mesh, which the chapter does not
-compute; variants draw other efficiencies and teeth.
+The chapter computes the simple pair with bearing efficiencies, the epicyclic train at 0.99
+per mesh and Humpage's reducer at 0.98 and 0.99 per mesh: the exercises use bearing
+coefficients (5.2), 0.98 per mesh (5.3), other teeth (5.4), a different efficiency per mesh
+(5.5) and other efficiencies (5.11); variants draw other numbers.
 """
 
 from __future__ import annotations
 
 from fractions import Fraction
 
-from ._choice import LinkId
+from ._choice import Choice, LinkId, Parts
 from ._core import register
 from ._value import Mistake, Value
 
 __all__ = ["davies_pair_zeta", "davies_pair_bearings", "davies_epicyclic_efficiency", "davies_recirculation",
-           "davies_humpage_efficiency", "davies_humpage_driver"]
+           "davies_humpage_efficiency", "davies_humpage_driver", "davies_humpage_axis"]
 
 
 def _eta(rng, lo=95, hi=99) -> float:
@@ -59,30 +63,41 @@ def davies_pair_zeta(eta):
 
 
 def _bearing_params(rng) -> dict:
-    return {"eta": _eta(rng, 95, 99), "eta_b": _eta(rng, 98, 99)}
+    return {"eta": _eta(rng, 95, 99), "zA": rng.randint(5, 20) / 1000, "zB": rng.randint(10, 40) / 1000}
+
+
+def _eq49(eta, zA, zB, swap=False, mesh=True) -> float:
+    """Laus's eq. (49) for r1 = 1, r2 = 2, gear 1 driving, with the positive coefficients."""
+    z = _pair_zeta(eta) if mesh else 0
+    if swap:
+        zA, zB = zB, zA
+    return 1 * (2 - zB - z) / (2 * (1 + zA + z))
 
 
 @register(
-    "davies_pair_bearings", exercise="5.2", title="Mesh and bearing losses together", stars=2, minutes=15,
+    "davies_pair_bearings", exercise="5.2", title="Mesh and bearing friction together", stars=2, minutes=20,
     kind="compute",
-    question="The same pair with eta_12 = {eta} also loses power in the two bearings that carry the input and the "
-             "output shafts: each port bearing, on its own, has an efficiency of {eta_b} in the sense of Laus's "
-             "eqs. (45) and (47). What is the overall efficiency of the pair?",
-    data={"eta": 0.97, "eta_b": 0.99}, params=_bearing_params,
+    question="The pair of exercise 5.1 (r1 = 1, r2 = 2, gear 1 driving) with eta_12 = {eta} also has Coulomb friction "
+             "in its two bearings: revolute A (gear 1, the input shaft) with the positive coefficient zeta_A = {zA} "
+             "and revolute B (gear 2, the output shaft) with zeta_B = {zB}, lengths in the unit of the radii (the "
+             "friction torque is zeta times the bearing's radial force). What is the overall efficiency of the pair?",
+    data={"eta": 0.97, "zA": 0.012, "zB": 0.03}, params=_bearing_params,
     answer=Value("efficiency", figures=4, mistakes=[
-        Mistake(lambda e, p: p["eta"], "That leaves out the two bearings: each takes its own share of the power."),
-        Mistake(lambda e, p: p["eta_b"] * p["eta"], "One bearing is missing: both port bearings lose power."),
-    ], generic="With the port bearings' efficiencies defined as in Laus eqs. (45) and (47), the overall efficiency "
-               "is a product."),
+        Mistake(lambda e, p: p["eta"], "That is the mesh alone: the two bearings take their share as well."),
+        Mistake(lambda e, p: _eq49(p["eta"], p["zA"], p["zB"], swap=True), "The two bearing coefficients are "
+                "exchanged: the friction of bearing A adds to the lever arm of the input torque on gear 1, that of "
+                "bearing B subtracts from the lever arm of the contact force on gear 2."),
+        Mistake(lambda e, p: _eq49(p["eta"], p["zA"], p["zB"], mesh=False), "That leaves out the mesh: its "
+                "coefficient zeta_12 (from eta_12) adds to both lever arms together with the bearings'."),
+        Mistake(lambda e, p: p["eta"] * (1 - p["zA"]) * (1 - p["zB"]), "A Coulomb coefficient is a length (a lever "
+                "arm of the radial force), not a share of the power: it enters the torque balance of each gear."),
+    ], generic="Find zeta_12 from eta_12 first; then write the torque balance of each gear with the contact force "
+               "and the bearing's friction torque zeta |U| (Laus's eq. 49), and take -P_B/P_A."),
 )
-def davies_pair_bearings(eta, eta_b):
+def davies_pair_bearings(eta, zA, zB):
     from ..davies import efficiency
 
-    mech = _pair()
-    zc = abs(efficiency(mech, 0, 1, 2, eta=eta).meshes[0].zeta)
-    za = (1 - eta_b) * (1 + zc) / eta_b  # Laus eqs. (46) and (48), gear 1 driving, r1 = 1, r2 = 2
-    zb = (1 - eta_b) * (2 - zc)
-    return efficiency(mech, 0, 1, 2, eta=eta, bearings={"A": za, "B": zb}).value
+    return efficiency(_pair(), 0, 1, 2, eta=eta, bearings={"A": zA, "B": zB}).value
 
 
 def _epicyclic(z2=60, z4=35):
@@ -168,7 +183,8 @@ def _humpage_params(rng) -> dict:
                 "every mesh at 0.99, the chapter's case: here the three meshes differ."),
         Mistake(lambda e, p: _humpage(p, thesis_axis=True), "That is what the thesis's printed planet axis gives: "
                 "use the axis consistent with the pitch cones (or the Willis equations)."),
-    ], generic="Use formula (H1) of the chapter with the three mesh efficiencies and the radii 20, 56, 24, 35, 76."),
+    ], generic="Find which gear drives in each of the three meshes (seen from the carrier 6), then use the chapter's "
+               "formula for shaft 1 as the input with the three mesh efficiencies and the radii 20, 56, 24, 35, 76."),
 )
 def davies_humpage_efficiency(eta12, eta25, eta43):
     return _humpage({"eta12": eta12, "eta25": eta25, "eta43": eta43})
@@ -203,3 +219,42 @@ def davies_humpage_driver():
     from ..davies import efficiency
 
     return efficiency(humpage(), 5, 4, 1, eta=0.98).mesh(5, 2).driver
+
+
+# ----------------------------------------------------------------------------- 5.11
+def _axis_params(rng) -> dict:
+    return _axis_data(rng.choice((0.95, 0.955, 0.96, 0.965, 0.97, 0.975, 0.985)))
+
+
+def _axis_data(eta) -> dict:
+    return {"eta": eta, "x_printed": round(_humpage({"eta12": eta, "eta25": eta, "eta43": eta}, thesis_axis=True), 4)}
+
+
+_AXIS_STEPS = Choice(["1", "2", "3", "4"], wrong={
+    "1": "Step 1 is right: with one module the pitch radii are in the ratio of the teeth, and only ratios of radii "
+         "enter the efficiency.",
+    "2": "Step 2 is right: each pitch point lies on both gears' pitch cones.",
+    "4": "Step 4 is right for this train: gear 1 drives gear 2, the planet drives gear 5 and gear 4 drives gear 3 "
+         "(the chapter's turning conditions)."})
+
+
+@register(
+    "davies_humpage_axis", exercise="5.11", title="Find the mistake: Humpage's planet axis", stars=2, minutes=20,
+    kind="mistake",
+    question="A report rates Humpage's reducer (gl.catalog.humpage(): input 1, output 4, frame 5, carrier 6; pitch "
+             "radii 20, 56, 24, 35, 76) at {eta} per mesh. (1) One module, so the pitch radii are the tooth numbers. "
+             "(2) The pitch points C, D and E of the three meshes lie on the pitch cones through the apex. (3) The "
+             "planet axis points along (-(r5 - r1)/(2 r2), sqrt(4 r2^2 - (r5 - r1)^2)/(2 r2)) in the plane x = 0. "
+             "(4) Gear 1 drives gear 2, the planet drives gear 5, gear 4 drives gear 3, and each mesh's efficiency "
+             "is applied in that direction. It finds an efficiency of {x_printed}. Which step is wrong, and what is "
+             "the efficiency?",
+    data=_axis_data(0.97), params=_axis_params,
+    answer=Parts({"step": ("the wrong step", _AXIS_STEPS), "efficiency": ("the efficiency", Value(
+        "efficiency", figures=4, meshes=lambda p: [p["eta"]] * 3, mistakes=[
+            Mistake(lambda e, p: p["x_printed"], "That is the report's value: correct the wrong step first."),
+            Mistake(lambda e, p: [_humpage({"eta12": x, "eta25": x, "eta43": x}) for x in (0.98, 0.99)],
+                    "That is the chapter's value for another mesh efficiency."),
+        ]))}),
+)
+def davies_humpage_axis(eta, x_printed):
+    return {"step": "3", "efficiency": _humpage({"eta12": eta, "eta25": eta, "eta43": eta})}
