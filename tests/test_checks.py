@@ -203,7 +203,7 @@ ANSWERS = {
     # 2 BSF = (D_m/d_b)(1 - g^2) f_r, g = 11 cos 25 deg/62, f_r = 30 Hz; step 3 divides by cos(alpha) too
     "adjacency_ball_line": ({"step": "3", "frequency": _two_bsf(62, 11, 25, 30)},
                             [("3", 181.7), ("2", _two_bsf(62, 11, 25, 30)), ("3", _two_bsf(62, 11, 25, 30) / 2)]),
-    "adjacency_bearing_placement": ({"speed": "A", "reason": "A"}, [("B", "B"), ("A", "C"), ("C", "A")]),
+    "adjacency_bearing_placement": ({"speed": "C", "reason": "B"}, [("A", "A"), ("C", "C"), ("B", "B")]),
     # ---------------------------------------------------------------- 5 Davies efficiency
     # r1 r2 (1 - eta)/(r1 + eta r2) = 0.06/2.94
     "davies_pair_zeta": (F(1, 49), [0.06 / 2.97, 0.03, -1 / 49, 1.0]),
@@ -232,11 +232,11 @@ ANSWERS = {
     "davies_design_etas": ({"eta_13": 0.985, "eta_42": 0.985},
                            [{"eta_13": 0.99, "eta_42": 0.99}, {"eta_13": 0.98, "eta_42": 0.98},
                             {"eta_13": 0.999, "eta_42": 0.97}]),
-    "davies_why_carrier": ({"observer": "the carrier", "reason": "A"},
-                           [("the frame", "D"), ("the carrier", "B"), ("the planet", "A")]),
+    "davies_why_carrier": ({"observer": "the carrier", "reason": "C"},
+                           [("the frame", "D"), ("the carrier", "A"), ("the planet", "C")]),
     # (H1) at 0.97 per mesh: 136 (20 + 0.9409 * 76)/(96 (1960 - 0.9409 * 1824))
-    "davies_humpage_axis": ({"step": "3", "efficiency": 136 * (20 + 0.9409 * 76) / (96 * (1960 - 0.9409 * 1824))},
-                            [("3", 0.3289), ("4", 0.5317), ("3", 0.97**3)]),
+    "davies_humpage_axis": ({"step": "2", "efficiency": 136 * (20 + 0.9409 * 76) / (96 * (1960 - 0.9409 * 1824))},
+                            [("2", 0.3289), ("4", 0.5317), ("2", 0.97**3)]),
     # a = r1 r4 = 37 * 19, b = r2 r3 = 38 * 18, r1 < r2, input 2: eq. (78) (b - eta^2 a)/(b - a)
     "davies_self_locking": ((684 - 0.9604 * 703) / (684 - 703),
                             [0.9604 * 19 / (703 - 0.9604 * 684), -(684 - 0.9604 * 703) / (684 - 703), -2.15]),

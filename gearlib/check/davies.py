@@ -233,7 +233,7 @@ def _axis_data(eta) -> dict:
 _AXIS_STEPS = Choice(["1", "2", "3", "4"], wrong={
     "1": "Step 1 is right: with one module the pitch radii are in the ratio of the teeth, and only ratios of radii "
          "enter the efficiency.",
-    "2": "Step 2 is right: each pitch point lies on both gears' pitch cones.",
+    "3": "Step 3 is right: each pitch point lies on both gears' pitch cones.",
     "4": "Step 4 is right for this train: gear 1 drives gear 2, the planet drives gear 5 and gear 4 drives gear 3 "
          "(the chapter's turning conditions)."})
 
@@ -243,13 +243,13 @@ _AXIS_STEPS = Choice(["1", "2", "3", "4"], wrong={
     kind="mistake",
     question="A report rates Humpage's reducer (gl.catalog.humpage(): input 1, output 4, frame 5, carrier 6; pitch "
              "radii 20, 56, 24, 35, 76) at {eta} per mesh. (1) One module, so the pitch radii are the tooth numbers. "
-             "(2) The pitch points C, D and E of the three meshes lie on the pitch cones through the apex. (3) The "
-             "planet axis points along (-(r5 - r1)/(2 r2), sqrt(4 r2^2 - (r5 - r1)^2)/(2 r2)) in the plane x = 0. "
+             "(2) The planet axis points along (-(r5 - r1)/(2 r2), sqrt(4 r2^2 - (r5 - r1)^2)/(2 r2)) in the plane "
+             "x = 0. (3) The pitch points C, D and E of the three meshes lie on the pitch cones through the apex. "
              "(4) Gear 1 drives gear 2, the planet drives gear 5, gear 4 drives gear 3, and each mesh's efficiency "
              "is applied in that direction. It finds an efficiency of {x_printed}. Which step is wrong, and what is "
              "the efficiency?",
     data=_axis_data(0.97), params=_axis_params,
-    answer=Parts({"step": ("the wrong step", _AXIS_STEPS), "efficiency": ("the efficiency", Value(
+    answer=Parts({"step": ("the step", _AXIS_STEPS), "efficiency": ("the efficiency", Value(
         "efficiency", figures=4, meshes=lambda p: [p["eta"]] * 3, mistakes=[
             Mistake(lambda e, p: p["x_printed"], "That is the report's value: correct the wrong step first."),
             Mistake(lambda e, p: [_humpage({"eta12": x, "eta25": x, "eta43": x}) for x in (0.98, 0.99)],
@@ -257,4 +257,4 @@ _AXIS_STEPS = Choice(["1", "2", "3", "4"], wrong={
         ]))}),
 )
 def davies_humpage_axis(eta, x_printed):
-    return {"step": "3", "efficiency": _humpage({"eta12": eta, "eta25": eta, "eta43": eta})}
+    return {"step": "2", "efficiency": _humpage({"eta12": eta, "eta25": eta, "eta43": eta})}

@@ -280,10 +280,10 @@ _OBSERVERS = Choice(["the carrier", "the frame", "the output annulus", "the plan
            "the planet": "Seen from the planet nothing flows through the meshes: a lossless mesh does no work on the "
                          "rolling of its own gears."})
 _REASONS = {
-    "A": "An ordinary efficiency is measured with the carrier held: a mesh loses (1 - eta) of the power it passes "
+    "A": "The frame is the only link that stands still, so only its flows are real power.",
+    "B": "The output annulus carries the output port, so its flows decide the output power.",
+    "C": "An ordinary efficiency is measured with the carrier held: a mesh loses (1 - eta) of the power it passes "
          "relative to its carrier, and that power can exceed the input power.",
-    "B": "The frame is the only link that stands still, so only its flows are real power.",
-    "C": "The output annulus carries the output port, so its flows decide the output power.",
     "D": "A loss is set by the real power flow, which never exceeds the input power.",
 }
 
@@ -296,13 +296,13 @@ _REASONS = {
              "the input power seen from the frame. Whose view of the flow sets how much power the mesh loses ('the "
              "carrier', 'the frame', 'the output annulus' or 'the planet'), and why (reason 'A', 'B', 'C' or 'D')?",
     answer=Parts({"observer": ("the observer", _OBSERVERS), "reason": ("the reason", Choice(_REASONS, wrong={
-        "B": "No link stands still except by convention: every motion in the network is relative.",
-        "C": "The output power comes from the port torques; the question is how much a mesh loses.",
+        "A": "No link stands still except by convention: every motion in the network is relative.",
+        "B": "The output power comes from the port torques; the question is how much a mesh loses.",
         "D": "Then an epicyclic train could not be less efficient than its meshes, and it is: its meshes lose a "
              "share of a larger power."}))}),
 )
 def davies_why_carrier():
-    return {"observer": "the carrier", "reason": "A"}
+    return {"observer": "the carrier", "reason": "C"}
 
 
 # ----------------------------------------------------------------------------- 5.12

@@ -346,7 +346,7 @@ _STEPS = Choice(["1", "2", "3", "4"], wrong={
              "{x_printed} Hz. Which step is wrong, and where is the line (Hz)?",
     data=_ball_data(13, 62, 11, 25, 1800),
     params=_ball_params,
-    answer=Parts({"step": ("the wrong step", _STEPS), "frequency": ("the frequency", Value("frequency", mistakes=[
+    answer=Parts({"step": ("the step", _STEPS), "frequency": ("the frequency", Value("frequency", mistakes=[
         Mistake(lambda e, p: p["x_printed"], "That is the report's value: correct the wrong step first."),
         Mistake(lambda e, p: _ball(p, "spin"), "That is the ball's spin, BSF: a defect on a ball strikes both "
                 "races each spin."),
@@ -361,16 +361,16 @@ def adjacency_ball_line(Z, D, d, alpha, rpm, x_printed):
 
 # ----------------------------------------------------------------------------- 4.13
 _SPEEDS = {
-    "A": "the sun relative to the housing",
-    "B": "the sun relative to the carrier",
-    "C": "the carrier relative to the housing",
+    "A": "the sun relative to the carrier",
+    "B": "the carrier relative to the housing",
+    "C": "the sun relative to the housing",
     "D": "the sun relative to the planet",
 }
 _WHY = {
-    "A": "A bearing's lines depend only on the speed of one of its rings relative to the other, and its rings sit "
+    "A": "The data say the sun turns on the carrier, so that is where its bearing is.",
+    "B": "A bearing's lines depend only on the speed of one of its rings relative to the other, and its rings sit "
          "in the links it physically joins; the turning pair [4, 1, a] of the data only says that sun and carrier "
          "are coaxial.",
-    "B": "The data say the sun turns on the carrier, so that is where its bearing is.",
     "C": "The carrier carries the load, so its speed sets every bearing line.",
     "D": "The sun's load comes from the planets, so the bearing sees the planets' speed.",
 }
@@ -385,14 +385,14 @@ _WHY = {
              "data. Which relative speed should set the bearing's lines (option 'A', 'B', 'C' or 'D' of the "
              "exercise), and why (reason 'A', 'B', 'C' or 'D')?",
     answer=Parts({"speed": ("the speed", Choice(_SPEEDS, wrong={
-        "B": "That is the speed the data's turning pair gives, not the speed between the rings of the real bearing.",
-        "C": "The carrier's own bearings see that speed; the sun's bearing has the sun in its inner ring.",
+        "A": "That is the speed the data's turning pair gives, not the speed between the rings of the real bearing.",
+        "B": "The carrier's own bearings see that speed; the sun's bearing has the sun in its inner ring.",
         "D": "The sun and the planet do not share a bearing: they mesh."})),
         "reason": ("the reason", Choice(_WHY, wrong={
-            "B": "A turning pair of the data is a statement about axes (which links are coaxial), and the same "
+            "A": "A turning pair of the data is a statement about axes (which links are coaxial), and the same "
                  "kinematics can be written with the sun on the housing; it does not place a bearing.",
             "C": "Each bearing has its own two rings; the load sets which ring carries sidebands, not the speed.",
             "D": "A bearing's frequencies come from the relative speed of its rings, not from the load's source."}))}),
 )
 def adjacency_bearing_placement():
-    return {"speed": "A", "reason": "A"}
+    return {"speed": "C", "reason": "B"}
