@@ -466,6 +466,12 @@ def test_the_usual_forms_of_a_right_answer(checks, answer):
     ("linkage_series", {"Kind": "Two-link chain", "REASON": "(a)"}), ("intro_sun_held", "1/(1 - e_{1,2} e_{2,3})"),
     ("intro_sun_held", 1 / (1 - S("e_1_2", positive=True) * S("e_2_3"))),
     ("graph_case_symbolic", "(e_3_5 ω_3 − e_4_5 ω_4)/(e_3_5 − e_4_5)"),
+    ("adjacency_ring_fault", "0.6563 orders"), ("adjacency_ring_fault", "21/32"),
+    ("adjacency_planetary_lines", ("950 rpm", "403.2 rad/s")), ("adjacency_hunting_tooth", ("100 Hz", "100 rpm", "593.3")),
+    ("adjacency_sun_fault_formula", "N·Z_r·f_s/(Z_r + Z_s)"), ("davies_planetary_formula", "η_1*η_2*(Z_s + Z_r)/(η_1 η_2 Z_s + Z_r)"),
+    ("davies_self_locking", "−0.4652"), ("davies_second_gear", "95.57 %"),
+    ("adjacency_bevel_angles", {"N_a": 17, "N_b": 51, "theta_a": 0, "theta_b": "-π/2"}),
+    ("adjacency_bevel_angles", {"N_a": 20, "N_b": 60, "theta_a": "1.571", "theta_b": 0}),
 ])
 def test_rounded_unicode_and_unit_forms_pass(checks, name, answer):
     result = gl.check.get(name)(answer)
@@ -490,6 +496,19 @@ def test_rounded_unicode_and_unit_forms_pass(checks, name, answer):
     ("adjacency_mesh_frequency", 450 * 60, "per minute"),
     ("intro_sun_held", F(5, 7), "formula"),
     ("third_gear", "e_1_7*e_7_8*(e_2_3*e_3_5 - 1)/(e_1_6*e_6_2*e_2_3*e_3_5*x)", "x"),
+    ("adjacency_planetary_lines", ("99.48", "403.2"), "rad/s"),
+    ("adjacency_hunting_tooth", (6000, F(5, 3), F(1780, 3)), "per minute"),
+    ("adjacency_ring_fault", "0.6563 Hz", "unit does not fit"),
+    ("adjacency_bevel_model", _bevel_model(lambda d: d["gear_pairs"][0].update(angles=["pi/2", "0"])), "degrees away"),
+    ("adjacency_bevel_angles", {"N_a": 20, "N_b": 60, "theta_a": 0, "theta_b": 0}, "opposite senses"),
+    ("adjacency_quiet_planetary", {"sun": 20, "planet": 31, "ring": 82}, "resonance"),
+    ("davies_planetary_formula", "(eta_1*eta_2*Z_s + Z_r)/(eta_1*eta_2*(Z_s + Z_r))", "exchanged input and output"),
+    ("davies_planetary_formula", "(Z_s + eta_1*eta_2*Z_r)/(Z_s + Z_r)", "sun as the input"),
+    ("davies_second_gear", 1 / _second_gear(0.975 * 0.985), "exchanged input and output"),
+    ("davies_self_locking", 1 / ((684 - 0.9604 * 703) / (684 - 703)), "exchanged input and output"),
+    ("davies_model_efficiency", _stepped_with_losses(eta={(40, 30): 0.99, (30, 20): 0.975}), "loss of each mesh"),
+    ("davies_design_etas", {"eta_13": 0.99, "eta_42": 0.99}, "target"),
+    ("davies_circuit_matrix", [[-1, 1, -1, -1, 0], [1, 0, 1, 0, -1]], "oriented along its chord"),
 ])
 def test_hints_fit_the_quantity(checks, name, answer, says):
     result = gl.check.get(name)(answer)
@@ -497,10 +516,19 @@ def test_hints_fit_the_quantity(checks, name, answer, says):
 
 
 def test_efficiency_hints_are_not_speed_ratio_hints(checks):
-    for answer in (1 / 0.8964980, -0.8964980, 0.5, 1 / 0.6663138):
-        for name in ("davies_epicyclic_efficiency", "davies_humpage_efficiency", "davies_pair_bearings"):
+    names = ("davies_epicyclic_efficiency", "davies_humpage_efficiency", "davies_pair_bearings", "davies_second_gear",
+             "davies_self_locking")
+    for answer in (1 / 0.8964980, -0.8964980, 0.5, 1 / 0.6663138, 1 / 0.9556700, 1 / 0.944196, -1 / 0.4652):
+        for name in names:
             message = gl.check.get(name)(answer).message
             assert not re.search("speed goes on top|output over input|external meshes|reciprocal", message), message
+    for part in ({"torque": 28.66, "efficiency": 1 / 0.9681343}, {"step": "2", "efficiency": 1 / 0.5317381}):
+        name = "davies_differential" if "torque" in part else "davies_humpage_axis"
+        message = gl.check.get(name)(part).message
+        assert "exchanged input and output" in message and "reciprocal" not in message, message
+    for wrong in ("1/(eta_1*eta_2)", "(eta_1*eta_2*Z_s + Z_r)/(eta_1*eta_2*(Z_s + Z_r))"):
+        message = gl.check.davies_planetary_formula(wrong).message
+        assert not re.search("output over input|speed goes on top|reciprocal", message), message
     assert "external meshes" not in gl.check.davies_pair_zeta(-1 / 49).message
 
 

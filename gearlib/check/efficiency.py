@@ -357,9 +357,9 @@ def _locks(reference, params) -> str:
     answer=Value("number", standard=False, mistakes=[
         Mistake(lambda e, p: _table5(p, 76), "That is the efficiency forwards (carrier in): driving from annulus 2 "
                 "reverses every carrier-relative power flow, and the formula changes."),
+        Mistake(lambda e, p: 1 / e, "You have exchanged input and output (eta -> 1/eta)."),
         Mistake(lambda e, p: [_table5(p, 77), _table5(p, 79)], "That formula is written for the other sign of r1 - "
                 "r2: compare the pitch radii of the two annuli."),
-        Mistake(lambda e, p: 1 / e, "You have exchanged input and output (eta -> 1/eta)."),
         Mistake(lambda e, p: 1 - e, "That is 1 - eta, the loss, not the efficiency."),
         Mistake(lambda e, p: -e, "The size is right but the sign is not: with annulus 2 driving, annulus 2 drives "
                 "planet gear 4 relative to the carrier, and planet gear 3 drives annulus 1."),
