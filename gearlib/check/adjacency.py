@@ -1,5 +1,5 @@
-"""Checks for chapter 4's exercises on complex weights and gear-mesh lines
-(``exercises/04_complex_adjacency.ipynb``): 4.1 to 4.4, 4.9 and 4.10. The fault-table
+"""Checks for chapter 4's exercises on complex weights, gear-mesh and bearing lines
+(``exercises/04_complex_adjacency.ipynb``): 4.1 to 4.4, 4.9, 4.10 and 4.14. The fault-table
 exercises (4.5 to 4.8, 4.11 to 4.13) are in :mod:`gearlib.check.faults`.
 
 Exercises 4.2 to 4.4 share a planetary gearbox the chapter does not show: sun 1 (30 teeth by
@@ -7,7 +7,8 @@ default), planet 2 (30), ring 3 (held), carrier 4; the sun turns at 20 Hz. A bal
 (D_m = 40 mm, d_b = 6 mm, Z = 9, no contact angle) carries the planet on the carrier's pin:
 inner ring on 4, outer ring in 2. Exercises 4.9 and 4.10 assign Penaud's angles to bevel
 gears whose axes are given by their directions in the plane of the axes. Variants draw other
-teeth, speeds and shaft angles.
+teeth, speeds and shaft angles. Exercise 4.14 puts a shaft in a housing on a ball bearing the
+chapter does not use.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ import cmath
 import math
 from fractions import Fraction
 
+from ._choice import Parts
 from ._compare import numeric
 from ._core import register
 from ._design import Condition, Design
@@ -24,7 +26,8 @@ from ._spec import Verdict
 from ._value import Hint, Mistake, Value
 
 __all__ = ["adjacency_planet_ratio", "adjacency_mesh_frequency", "adjacency_planet_tooth_frequency",
-           "adjacency_outer_ring_frequency", "adjacency_bevel_angles", "adjacency_bevel_model"]
+           "adjacency_outer_ring_frequency", "adjacency_bevel_angles", "adjacency_bevel_model",
+           "adjacency_shaft_bearing"]
 
 _BOX = {"sun": 30, "planet": 30, "f_sun": 20}
 
@@ -282,3 +285,72 @@ class _BevelModel(Model):
 )
 def adjacency_bevel_model(side, planet):
     return _differential(side, planet)
+
+
+# ----------------------------------------------------------------------------- 4.14
+def _shaft(p):
+    """A shaft 1 in a housing 0 on the exercise's ball bearing (inner ring on the shaft)."""
+    from ..mechanism.data import Mechanism
+
+    return Mechanism.from_dict({"links": {0: "housing", 1: "shaft"}, "turning_pairs": [{
+        "links": [0, 1], "axis": "a", "bearings": [{"name": "shaft bearing", "pitch_diameter": p["D"],
+                                                    "ball_diameter": p["d"], "balls": p["Z"], "inner": 1}]}]})
+
+
+def _rings(p) -> dict:
+    """The classic lines by hand: f_r, BPFI, BPFO, the cage relative to either ring."""
+    f_r, g = Fraction(p["rpm"], 60), Fraction(p["d"]) / Fraction(p["D"])
+    return {"f_r": f_r, "bpfi": Fraction(p["Z"], 2) * (1 + g) * f_r, "bpfo": Fraction(p["Z"], 2) * (1 - g) * f_r,
+            "ftf": (1 - g) / 2 * f_r, "ftf_inner": (1 + g) / 2 * f_r}
+
+
+def _shaft_params(rng) -> dict:
+    d = rng.randint(6, 14)
+    return {"Z": rng.randint(8, 14), "d": d, "D": rng.randint(4 * d, 6 * d), "rpm": rng.choice((1450, 1750, 2900, 3550))}
+
+
+_RINGS = Parts({
+    "bpfi": ("BPFI", Value("frequency", mistakes=[
+        Mistake(lambda e, p: _rings(p)["bpfo"], "That is the outer race's line, (Z/2)(1 - g) f_r: the inner race "
+                "meets the balls faster, (Z/2)(1 + g) f_r."),
+        Mistake(lambda e, p: p["Z"] * _rings(p)["f_r"] / 2, "That leaves out g = d_b cos(alpha)/D_m: the cage does "
+                "not turn at exactly half the shaft's speed."),
+    ], generic="Take f_r, the inner ring's speed relative to the outer ring; a defect on the inner race meets the Z "
+               "balls once per turn of the inner ring relative to the cage.")),
+    "ftf": ("FTF", Value("frequency", mistakes=[
+        Mistake(lambda e, p: _rings(p)["ftf_inner"], "That is the cage's speed relative to the inner ring; FTF is "
+                "the cage relative to the outer ring, (1 - g) f_r / 2."),
+        Mistake(lambda e, p: _rings(p)["f_r"] / 2, "That leaves out g: the ball's centre moves at the mean of its two "
+                "contact points' speeds, which are at D_m (1 - g)/2 and D_m (1 + g)/2 from the axis."),
+    ], generic="The cage turns with the balls' centres, at the mean speed of their two contact points; FTF is its "
+               "speed relative to the outer ring.")),
+    "sideband": ("the sideband", Value("frequency", mistakes=[
+        Mistake(lambda e, p: _rings(p)["bpfi"] - _rings(p)["f_r"], "That is the lower sideband; the question asks "
+                "for the first one above BPFI."),
+        Mistake(lambda e, p: _rings(p)["bpfi"] + _rings(p)["ftf"], "That sideband is spaced by the cage's speed: an "
+                "inner-race defect passes through the load zone once per turn of the shaft."),
+        Mistake(lambda e, p: _rings(p)["bpfi"], "That is BPFI itself."),
+    ], generic="The load zone modulates an inner-race defect once per turn of the shaft: the sidebands are BPFI "
+               "plus and minus multiples of the shaft's speed.")),
+})
+
+
+@register(
+    "adjacency_shaft_bearing", exercise="4.14", title="An inner-race defect and its sidebands", stars=2,
+    minutes=15, kind="compute",
+    question="A motor shaft at {rpm} rpm runs in a deep-groove ball bearing in the housing: Z = {Z} balls of d_b = {d} "
+             "mm on a pitch diameter D_m = {D} mm, no contact angle, inner ring on the shaft. Give, in Hz, (a) BPFI, "
+             "(b) FTF, and (c) the first sideband above BPFI (an inner-race defect passes through the load zone, "
+             "fixed in the housing, once per turn of the shaft).",
+    data={"Z": 10, "d": 9, "D": 46, "rpm": 1750}, params=_shaft_params,
+    answer=_RINGS,
+)
+def adjacency_shaft_bearing(Z, d, D, rpm):
+    from ..adjacency.monitoring import fault_table
+
+    p = {"Z": Z, "d": d, "D": D, "rpm": rpm}
+    table = fault_table(_shaft(p), ground=0, inputs={1: f"{rpm}rpm"}, sidebands=1)
+    (bpfi,) = table.select(kind="BPFI", fundamental=True)
+    (ftf,) = table.select(kind="FTF", fundamental=True)
+    (upper,) = [r for r in table.select(family="inner race", kind="sideband") if r.sideband == 1]
+    return {"bpfi": bpfi.frequency, "ftf": ftf.frequency, "sideband": upper.frequency}
