@@ -52,7 +52,7 @@ def representations(value, *, percent: bool = False) -> set[str]:
         for v in value.values():
             out |= representations(v, percent=percent)
         return out
-    if isinstance(value, (list, tuple, set, frozenset)):
+    if isinstance(value, (list, tuple, set, frozenset, sympy.MatrixBase)):
         return out  # link sets and matrices: checked entry by entry where it matters
     if isinstance(value, str):
         text = value.strip()
