@@ -66,7 +66,18 @@ def place(ax, sk, texts, names, font_size) -> tuple:
     bounds = (x0, x1, y0, y1)
 
     def choose(cands, w, h, own):
-        c = np.array(cands, dtype=float).reshape(-1, 2)
+        """The first free candidate (the preferred ones, then rings around the first), or the one
+        that meets the fewest."""
+        near, ring = cands
+        best = score(np.array(near, dtype=float).reshape(-1, 2), w, h, own)
+        if best[0] > 0:
+            far = score(_around(*near[0], w, h), w, h, own)
+            best = min(best, far, key=lambda t: t[0])
+        c = best[1]
+        boxes.append((c[0] - w / 2, c[0] + w / 2, c[1] - h / 2, c[1] + h / 2))
+        return float(c[0]), float(c[1])
+
+    def score(c, w, h, own):
         rect = np.column_stack([c[:, 0] - w / 2 - margin, c[:, 0] + w / 2 + margin,
                                 c[:, 1] - h / 2 - margin, c[:, 1] + h / 2 + margin])
         mine = ids.get(own) if own is not None else None
@@ -85,8 +96,7 @@ def place(ax, sk, texts, names, font_size) -> tuple:
                | (rect[:, 3] > bounds[3]))
         bad += out * 2
         i = int(np.argmin(bad))   # the first of the fewest
-        boxes.append((c[i, 0] - w / 2, c[i, 0] + w / 2, c[i, 1] - h / 2, c[i, 1] + h / 2))
-        return float(c[i, 0]), float(c[i, 1])
+        return float(bad[i]), c[i]
 
     spots, leaders = [], []
     for lb, text in zip(sk.labels, texts):
@@ -193,18 +203,16 @@ def _candidates(sk, lb, w, h, m) -> list:
                 out += [(px, py + h / 2 + 2 * m), (px, py - h / 2 - 2 * m)]
             else:
                 out += [(px + w / 2 + 2 * m, py), (px - w / 2 - 2 * m, py)]
-    return out + _around(x, y, w, h)
+    return out, None
 
 
-def _around(x, y, w, h, rings=10) -> list:
+def _around(x, y, w, h, rings=10) -> np.ndarray:
     """Positions on rings around (x, y), nearest first: where nothing nearer is free."""
-    out = []
-    for k in range(1, rings + 1):
-        for i in range(-k, k + 1):
-            for j in range(-k, k + 1):
-                if max(abs(i), abs(j)) == k:
-                    out.append((x + i * 0.55 * w, y + j * 1.1 * h))
-    return out
+    i, j = np.meshgrid(np.arange(-rings, rings + 1), np.arange(-rings, rings + 1))
+    i, j = i.ravel(), j.ravel()
+    ring = np.maximum(abs(i), abs(j))
+    keep = np.argsort(ring, kind="stable")[1:]
+    return np.column_stack([x + i[keep] * 0.55 * w, y + j[keep] * 1.1 * h])
 
 
 def _symbol_candidates(sym, w, h, m) -> list:
@@ -219,7 +227,7 @@ def _symbol_candidates(sym, w, h, m) -> list:
     for k in (2, 3):
         out += [(bx1 + gx, cy - (k - 1) * h), (bx0 - gx, cy - (k - 1) * h), (cx, by0 - gy - (k - 1) * h),
                 (bx1 + k * gx, cy), (bx0 - k * gx, cy)]
-    return out + _around(cx, cy, w, h)
+    return out, None
 
 
 def _area(poly) -> float:

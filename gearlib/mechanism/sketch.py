@@ -257,6 +257,8 @@ def draw_sketch(mech, ax=None, *, title=None, names=False, font_size=8, colors=T
                 bbox=dict(boxstyle=f"square,pad={PAD / (font_size - 1):.3f}", facecolor="white", edgecolor="none"))
     ax.set_facecolor("white")
     ax.axis("off")
+    ax.xaxis.set_visible(False)   # no ticks to lay out when the title is placed
+    ax.yaxis.set_visible(False)
     ax.set_title(sk.name if title is None else title, fontsize=font_size + 2)
     return ax
 
