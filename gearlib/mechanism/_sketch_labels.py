@@ -120,22 +120,37 @@ def place(ax, sk, texts, names, font_size) -> tuple:
 
 
 def _leader(sk, link, rect, near):
-    """A leader from a label's box to its link, when the box stands more than *near* from it."""
+    """A leader from a label's box to its link, when the box stands more than *near* from it
+    (from its blocks, or, for a link without one, from its lines)."""
     x0, x1, y0, y1 = rect
     best = None
-    points = [q for b in sk.blocks if b.link == link and not b.copy
-              for q in [(sum(p[0] for p in b.polygon) / 4, sum(p[1] for p in b.polygon) / 4)]]
-    for ln in sk.lines:
-        if ln.link == link and not ln.copy:
-            points += [ln.start, ln.end, ((ln.start[0] + ln.end[0]) / 2, (ln.start[1] + ln.end[1]) / 2)]
+    for b in sk.blocks:
+        if b.link == link and not b.copy:
+            xs, ys = [p[0] for p in b.polygon], [p[1] for p in b.polygon]
+            dx = max(min(xs) - x1, x0 - max(xs), 0.0)
+            dy = max(min(ys) - y1, y0 - max(ys), 0.0)
+            if (dx * dx + dy * dy) ** 0.5 <= near:
+                return None
+            points = [(sum(xs) / len(xs), sum(ys) / len(ys))]
+            best = _nearer(best, points, rect)
+    if best is None:
+        for ln in sk.lines:
+            if ln.link == link and not ln.copy:
+                mid = ((ln.start[0] + ln.end[0]) / 2, (ln.start[1] + ln.end[1]) / 2)
+                best = _nearer(best, [ln.start, ln.end, mid], rect)
+    if best is None or best[0] <= near:
+        return None
+    return best[1], best[2]
+
+
+def _nearer(best, points, rect):
+    x0, x1, y0, y1 = rect
     for px, py in points:
         cx, cy = min(max(px, x0), x1), min(max(py, y0), y1)
         d = ((px - cx) ** 2 + (py - cy) ** 2) ** 0.5
         if best is None or d < best[0]:
             best = (d, (cx, cy), (px, py))
-    if best is None or best[0] <= near:
-        return None
-    return best[1], best[2]
+    return best
 
 
 def _hits(rect, seg) -> np.ndarray:
