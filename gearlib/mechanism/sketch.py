@@ -9,18 +9,26 @@ What the drawing shows, and where it comes from in the data:
 * the **axes**: one dash-dot line per coaxial group of turning pairs (links that are coaxial
   share one line); the *main axis*, the group with the most links, is horizontal;
 * a train about a main axis (a planetary, an automatic transmission) is a **half section**:
-  above the axis only, each link turning about it as a shaft (inside, nearer the axis) or a
-  drum (outside the gears), shafts nested as their spans require, with spokes to its gears,
-  carrier arms, brakes and clutches. A train of fixed parallel axes (a gear pair, a compound
-  train) is a **full section**, the axes one above the other at their centre distances (the
-  developed view), every shaft held by **bearings** in the frame;
+  above the axis only, each link turning about it as a shaft (inside, nearer the axis) and/or
+  a drum (outside the gears), shafts nested as their spans require, with spokes to its gears,
+  arms to its planets' pins (on one side of a planet, or on both as a bracket), brakes and
+  clutches; an input enters and an output leaves on a shaft at the ends. The routing
+  looks for a drawing in which no line crosses another member's line,
+  pin or gear, and reports what it could not avoid in ``Sketch.crossings``. A train of
+  fixed parallel axes (a gear pair, a compound train) is a **full section**, the axes one above
+  the other at their centre distances (the developed view), every shaft held by **bearings**
+  in the frame;
 * the **gears** as blocks whose heights follow the pitch radii (``radii``, or module and teeth;
   teeth alone are relative sizes within a set of gears in mesh, whose module the data leave
   free: such a set drawn under 40 % of the largest gear is drawn larger; a symbolic ratio takes
   a size that closes its centre distance): a sun from its shaft to its pitch radius, a ring
   outwards from its pitch radius,
   a planet centred on its axis, off the main axis on its carrier's **pin**; a compound
-  (stepped) planet as two blocks on one pin, a double-pinion set as two pins; **bevel** gears
+  (stepped) planet as two blocks on one pin, a double-pinion set as two pins, its pinions side
+  by side where one above the other would overlap (they stand at different angles about the
+  axis; a pin that passes behind the other pinion is drawn dashed); a profile-shifted pair
+  (``profile_shift``) at its working centre distance, its gears at their working pitch radii;
+  **bevel** gears
   as frustums about their common cone apex, inclined by their shaft angle (from the pitch radii
   when a bevel planet meets two gears, as in a differential or Humpage's reducer; else from
   Penaud's angles, or 90 degrees);
@@ -28,7 +36,10 @@ What the drawing shows, and where it comes from in the data:
   no gear, the bearings of fixed axes, or the hatched line of a held member;
 * **brakes** (a pair of plates under the hatched housing) and **clutches** (a pair of plates
   between two members), with the names the data gives them;
-* each link's id once, on its first block (or its arm, or its line).
+* each link's id once, on its largest block (or beside its lines), and each brake's and
+  clutch's name: :func:`~gearlib.draw_sketch` places every label, on the page, clear of the lines, of
+  the other links' blocks and of the other labels (with a dotted leader where it found room
+  only away from its link).
 
 A spatial train, with an axis held by a link that itself turns about an inclined axis, cannot
 be drawn in one plane: :func:`~gearlib.sketch_layout` raises :class:`~gearlib.errors.GeometryError` and says
@@ -120,8 +131,10 @@ class Sketch:
     """The geometry of a kinematic sketch (see the module docstring), in the units of the pitch
     radii. ``mode`` is ``"half"`` (a half section about the main axis), ``"full"`` (both halves,
     when two identical planets are shown) or ``"fixed"`` (fixed parallel axes); ``crossings``
-    counts the spokes that cross another member's line; ``notes`` lists what the data leave
-    inconsistent (a centre distance the pitch radii do not close, drawn as the first mesh gives it)."""
+    counts the vertical pieces (spokes, arms, brakes, clutches) that cross another member's line or
+    pin, and the pins that pass through another link's gear; ``notes`` lists what the data leave
+    inconsistent (a centre distance the pitch radii, or a profile shift's working distance, do not
+    close, drawn as the first mesh gives it)."""
 
     name: str
     mode: str
