@@ -173,7 +173,8 @@ class _Builder(Emitter):
         flippable = [u.index for u in self.g.units if u.kind == "spur" and self.half
                      and any(b[1] > 1e-9 or b[2] < u.width - 1e-9 for b in placed if b[0] == u.index)]
         self.router = Router(ports, widths, members, self.pitch, inner_top, outer, self.step, ends, nested,
-                             self.ground if self.ground in self.routed else None, placed, self.behind, flippable)
+                             self.ground if self.ground in self.routed else None, placed, self.behind, flippable,
+                             self._blocks_of(self.ground) if self.ground in self.routed else ())
         self.route = self.router.solve()
         for u in self.g.units:   # units drawn mirrored: their planes in the other order
             if u.index in self.route.flipped:
@@ -181,6 +182,15 @@ class _Builder(Emitter):
         drums = [y for (m, z), y in self.route.levels.items() if z == "out"]
         has_brakes = any(p.kind == "brake" for p in ports)
         self.top = max(drums + [outer]) + self.step * (2.6 if has_brakes else 1.2)
+
+    def _blocks_of(self, link) -> list:
+        """(unit, x0, x1) of every gear block of *link*, in unit coordinates."""
+        out = []
+        for u in self.g.units:
+            for k, poly, _ in u.blocks:
+                if self.p.gears[k].link == link:
+                    out.append((u.index, min(q[0] for q in poly), max(q[0] for q in poly)))
+        return out
 
     def _partners(self) -> dict:
         """axis -> the axes of the pinions that mesh its own on the same carrier (a double-pinion

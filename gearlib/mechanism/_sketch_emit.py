@@ -16,6 +16,40 @@ def _mirror_pt(p):
     return (p[0], -p[1])
 
 
+def _stack(spans) -> list:
+    """Rows (0, 1, -1, 2, ...) for shafts on one axis, in the order given: shafts whose spans
+    overlap sit side by side."""
+    rows, out = [], []
+    for s in spans:
+        level = 0
+        while any(lv == level and not (s[2] < lo or s[1] > hi) for lv, lo, hi in rows):
+            level = -level if level > 0 else 1 - level
+        rows.append((level, s[1], s[2]))
+        out.append(level)
+    return out
+
+
+def _rows(spans, offset, delta, axes) -> list:
+    """The rows of the shafts on one axis, in the order (of the few there are) whose arms, up or
+    down to the axes they hold, cross the fewest other shafts; the first such order."""
+    from itertools import permutations
+
+    best = None
+    for order in permutations(range(len(spans))) if len(spans) <= 6 else [range(len(spans))]:
+        levels = dict(zip(order, _stack([spans[i] for i in order])))
+        ys = {i: offset + levels[i] * delta for i in levels}
+        bad = 0
+        for i, (_link, _lo, _hi, _b, arms) in enumerate(spans):
+            for p, x in arms:
+                y0, y1 = sorted((ys[i], axes[p.axis].offset))
+                bad += sum(1 for j, t in enumerate(spans) if j != i and t[1] < x < t[2] and y0 < ys[j] < y1)
+        if best is None or bad < best[0]:
+            best = (bad, [levels[i] for i in range(len(spans))])
+        if bad == 0:
+            break
+    return best[1]
+
+
 class Emitter:
     # ------------------------------------------------------------------ drawing primitives
     def _line(self, link, kind, a, b, copy=False):
@@ -149,8 +183,8 @@ class Emitter:
         self._symbol("brake", p.name, (p.member,), segs, hatch, (x + w, plate + 0.5 * g))
 
     def _clutch(self, p, x, y1, y2):
-        w, g = 0.36 * self.pitch, self.gap
         (lo_m, lo), (hi_m, hi) = sorted([(p.member, y1), (p.other, y2)], key=lambda t: t[1])
+        w, g = 0.36 * self.pitch, min(self.gap, 0.4 * (hi - lo))   # plates between the two lines
         mid = (lo + hi) / 2
         self._line(lo_m, "spoke", (x, lo), (x, mid - g / 2))
         self._line(hi_m, "spoke", (x, hi), (x, mid + g / 2))
@@ -189,12 +223,7 @@ class Emitter:
                 if bearing:
                     lo, hi = lo - 0.35 * self.pitch, hi + 0.35 * self.pitch
                 spans.append([link, lo, hi, bearing, arms])
-            rows: list = []
-            for s in spans:   # shafts whose spans overlap sit side by side
-                level = 0
-                while any(lv == level and not (s[2] < lo or s[1] > hi) for lv, lo, hi in rows):
-                    level = -level if level > 0 else 1 - level
-                rows.append((level, s[1], s[2]))
+            for s, level in zip(spans, _rows(spans, a.offset, delta, parts.axes)):
                 y = a.offset + level * delta
                 link, lo, hi, bearing, arms = s
                 if link == self.ground:

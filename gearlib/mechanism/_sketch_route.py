@@ -76,13 +76,14 @@ class Router(Nesting, Search):
     """One drawing scored (:meth:`evaluate`); the search is :class:`._sketch_search.Search`."""
 
     def __init__(self, ports, units, members, pitch, inner_top, outer_bottom, step, ends, nested=(), held=None,
-                 blocks=(), behind=None, flippable=()):
+                 blocks=(), behind=None, flippable=(), held_blocks=()):
         self.ports = ports
         self.units = units                # unit widths, in order
         self.members = members            # routed members, in order
         self.index = {m: i for i, m in enumerate(members)}
         self.nested = tuple((u, v) for u, v in nested if u in self.index and v in self.index)
         self.held = held                  # the frame, when it is a routed member: wanted outside
+        self.held_blocks = tuple(held_blocks)   # (unit, x0, x1) of its gears: its hatched lines span them
         self.pitch = pitch
         self.inner_top = inner_top
         self.outer_bottom = outer_bottom
@@ -274,6 +275,10 @@ class Router(Nesting, Search):
                     lo, hi = left, left if hi is None else hi
                 if "right" in ends:
                     lo, hi = right if lo is None else lo, right
+            if m == self.held and self.held_blocks:   # the frame's lines span its gears
+                for u, bx0, bx1 in self.held_blocks:
+                    bx0, bx1 = (widths[u] - bx1, widths[u] - bx0) if u in flipped else (bx0, bx1)
+                    lo, hi = min(lo, unit_x[u] + bx0), max(hi, unit_x[u] + bx1)
             if hi - lo < stub:   # a member with one piece: a stub of shaft or drum
                 if hi >= right - 1e-9 and lo > left + 1e-9:
                     lo = hi - stub
