@@ -84,7 +84,8 @@ class Block:
 @dataclass(frozen=True)
 class Line:
     """A straight piece of a link: ``"shaft"``, ``"drum"``, ``"spoke"``, ``"arm"``, ``"pin"``,
-    ``"riser"`` (a shaft joined to a drum) or ``"housing"`` (the frame)."""
+    ``"hidden"`` (the piece of a pin behind the other pinion of a double-pinion set, drawn
+    dashed), ``"riser"`` (a shaft joined to a drum) or ``"housing"`` (the frame)."""
 
     link: object
     kind: str
