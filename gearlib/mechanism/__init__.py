@@ -28,7 +28,8 @@ EXPORTS = {
     "elements": ("Link", "Bearing", "TurningPair", "GearPair", "GEAR_KINDS"),
     "data": ("Mechanism",),
     "shifting": ("ShiftElement", "GearState", "SHIFT_KINDS"),
-    "assembly": ("PlanetarySet", "AssemblyCondition", "planetary_sets", "assembly_conditions", "check_assembly"),
+    "assembly": ("PlanetarySet", "AssemblyCondition", "planetary_sets", "assembly_conditions", "check_assembly",
+                 "with_concentric_teeth"),
     "io": ("load", "save", "loads"),
     "generate": ("random_mechanism", "serial_train"),
     "graph": ("to_networkx", "FundamentalCircuit", "fundamental_circuits", "displacement_graph"),
@@ -49,6 +50,7 @@ TOP = (
     "willis_equations", "willis_matrix", "WillisEquation", "omega", "ratio_symbols",
     "dof", "Mobility", "choose_inputs", "speeds", "ratio", "Solution", "Constraints",
     "draw_graph", "plot_speeds", "number", "random_mechanism", "serial_train", "assembly_conditions",
+    "with_concentric_teeth",
     "draw_sketch", "sketch_layout", "Sketch",
     "plot", "sketch", "widgets", "display", "equations", "generate", "graph", "io", "kinematics", "mobility",
 )
