@@ -36,7 +36,7 @@ EXPORTS = {
     "equations": ("omega", "WillisEquation", "willis_equations", "willis_matrix", "ratio_symbols"),
     "kinematics": ("Solution", "speeds", "ratio", "METHODS", "Constraints", "format_value"),
     "mobility": ("Mobility", "dof", "redundant_gear_pairs", "choose_inputs"),
-    "display": ("Number", "number"),
+    "display": ("Number", "number", "Formula", "formula"),
     "plot": ("style", "graph_layout", "draw_graph", "plot_speeds", "plot_ratio_sweep"),
     "sketch": ("Sketch", "Block", "Line", "AxisLine", "Symbol", "Label", "sketch_layout", "draw_sketch",
                "figure_size"),
@@ -50,7 +50,7 @@ TOP = (
     "willis_equations", "willis_matrix", "WillisEquation", "omega", "ratio_symbols",
     "dof", "Mobility", "choose_inputs", "speeds", "ratio", "Solution", "Constraints",
     "draw_graph", "plot_speeds", "number", "random_mechanism", "serial_train", "assembly_conditions",
-    "with_concentric_teeth",
+    "with_concentric_teeth", "formula",
     "draw_sketch", "sketch_layout", "Sketch",
     "plot", "sketch", "widgets", "display", "equations", "generate", "graph", "io", "kinematics", "mobility",
 )
