@@ -81,10 +81,12 @@ class Formula:
     def __init__(self, expr):
         self.expr = expr
 
-    def latex(self) -> str:
+    def latex(self, **settings) -> str:
+        """The LaTeX form; *settings* go to :func:`sympy.latex` (``order="none"`` keeps the terms of
+        an expression built with ``evaluate=False`` in the order written)."""
         expr = self.expr
         names = {s: t for s in getattr(expr, "free_symbols", ()) if (t := _tex_name(str(s))) is not None}
-        return sympy.latex(expr, symbol_names=names)
+        return sympy.latex(expr, symbol_names=names, **settings)
 
     def __repr__(self) -> str:
         return str(self.expr)
