@@ -82,7 +82,7 @@ class Formula:
         self.expr = expr
 
     def latex(self, **settings) -> str:
-        """The LaTeX form; *settings* go to :func:`sympy.latex` (``order="none"`` keeps the terms of
+        """The LaTeX form; *settings* go to ``sympy.latex`` (``order="none"`` keeps the terms of
         an expression built with ``evaluate=False`` in the order written)."""
         expr = self.expr
         names = {s: t for s in getattr(expr, "free_symbols", ()) if (t := _tex_name(str(s))) is not None}
