@@ -16,11 +16,12 @@ as mathematics: ``2/7`` becomes :math:`\\tfrac{2}{7}`, ``0.9462068699`` becomes 
 from __future__ import annotations
 
 import cmath
+import re
 from fractions import Fraction
 
 import sympy
 
-__all__ = ["Number", "number"]
+__all__ = ["Number", "number", "Formula", "formula"]
 
 
 class Number:
@@ -58,3 +59,48 @@ class Number:
 def number(value, digits: int = 6) -> Number:
     """Wrap *value* for display in prose (see the module documentation)."""
     return Number(value, digits)
+
+
+_TWO_SUBSCRIPTS = re.compile(r"^([A-Za-z]+)_([^_]+)_([^_]+)$")
+
+
+def _tex_name(name: str) -> str | None:
+    m = _TWO_SUBSCRIPTS.match(name)
+    if m is None:
+        return None
+    head, a, b = m.groups()
+    head = {"theta": r"\theta", "omega": r"\omega"}.get(head, head)
+    return f"{head}_{{{a},{b}}}"
+
+
+class Formula:
+    """A sympy expression (or matrix) shown as the book writes it: a symbol with two
+    subscripts, such as the gear ratio ``e_4_1``, prints as :math:`e_{4,1}`, not sympy's
+    :math:`e_{4 1}` (ambiguous once links reach 10). The text form is sympy's."""
+
+    def __init__(self, expr):
+        self.expr = expr
+
+    def latex(self, **settings) -> str:
+        """The LaTeX form; *settings* go to ``sympy.latex`` (``order="none"`` keeps the terms of
+        an expression built with ``evaluate=False`` in the order written)."""
+        expr = self.expr
+        names = {s: t for s in getattr(expr, "free_symbols", ()) if (t := _tex_name(str(s))) is not None}
+        return sympy.latex(expr, symbol_names=names, **settings)
+
+    def __repr__(self) -> str:
+        return str(self.expr)
+
+    def _repr_latex_(self) -> str:
+        return f"$\\displaystyle {self.latex()}$"
+
+
+def formula(expr) -> Formula:
+    """Wrap a sympy expression for display with the book's subscripts (see :class:`Formula`).
+
+    >>> import sympy, gearlib as gl
+    >>> e41, e52, e21 = sympy.symbols("e_4_1 e_5_2 e_2_1")
+    >>> gl.formula(e41 / (1 - e52 * e21)).latex()
+    '\\\\frac{e_{4,1}}{- e_{2,1} e_{5,2} + 1}'
+    """
+    return Formula(expr)
