@@ -36,7 +36,7 @@ EXPORTS = {
     "equations": ("omega", "WillisEquation", "willis_equations", "willis_matrix", "ratio_symbols"),
     "kinematics": ("Solution", "speeds", "ratio", "METHODS", "Constraints", "format_value"),
     "mobility": ("Mobility", "dof", "redundant_gear_pairs", "choose_inputs"),
-    "display": ("Number", "number", "formula", "latex"),
+    "display": ("Number", "number", "Formula", "formula"),
     "plot": ("style", "graph_layout", "draw_graph", "plot_speeds", "plot_ratio_sweep"),
     "sketch": ("Sketch", "Block", "Line", "AxisLine", "Symbol", "Label", "sketch_layout", "draw_sketch",
                "figure_size"),
@@ -49,7 +49,8 @@ TOP = (
     "to_networkx", "fundamental_circuits", "FundamentalCircuit", "displacement_graph",
     "willis_equations", "willis_matrix", "WillisEquation", "omega", "ratio_symbols",
     "dof", "Mobility", "choose_inputs", "speeds", "ratio", "Solution", "Constraints",
-    "draw_graph", "plot_speeds", "number", "formula", "random_mechanism", "serial_train", "assembly_conditions",
+    "draw_graph", "plot_speeds", "number", "random_mechanism", "serial_train", "assembly_conditions",
+    "formula",
     "draw_sketch", "sketch_layout", "Sketch",
     "plot", "sketch", "widgets", "display", "equations", "generate", "graph", "io", "kinematics", "mobility",
 )

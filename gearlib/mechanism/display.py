@@ -1,13 +1,7 @@
-"""Numbers and formulas for prose: exact fractions as fractions, floats rounded, complex in
-polar form, symbols in the book's notation.
+"""Numbers for prose: exact fractions as fractions, floats rounded, complex in polar form.
 
 ``gl.number(value)`` wraps a value so that a notebook (and myst-nb's ``glue``) shows it
 as mathematics: ``2/7`` becomes :math:`\\tfrac{2}{7}`, ``0.9462068699`` becomes ``0.946207``.
-``gl.formula(expr)`` shows a sympy expression, equation or matrix with gearlib's symbols
-written as the book writes them: ``e_1_2`` as :math:`e_{1,2}` (sympy's own printer would
-write :math:`e_{1 2}`, which reads as :math:`e_{12}` once links reach 10), ``omega_4`` as
-:math:`\\omega_{4}` and ``omega_2_4`` as :math:`\\omega_{2/4}`. The symbols themselves keep
-their names (``e_1_2``), which is how a reader types them.
 
 >>> import gearlib as gl
 >>> from fractions import Fraction
@@ -17,9 +11,6 @@ their names (``e_1_2``), which is how a reader types them.
 '$0.946207$'
 >>> gl.number(-140.0)
 -140
->>> import sympy
->>> print(gl.formula(sympy.Symbol("e_1_12") / (1 - sympy.Symbol("e_12_3")))._repr_latex_())
-$\\frac{e_{1,12}}{1 - e_{12,3}}$
 """
 
 from __future__ import annotations
@@ -30,32 +21,7 @@ from fractions import Fraction
 
 import sympy
 
-__all__ = ["Number", "number", "formula", "latex"]
-
-_NAMES = re.compile(r"(e|eta|omega)_([^_]+)(?:_([^_]+))?")
-
-
-def _symbol_tex(name: str) -> str | None:
-    m = _NAMES.fullmatch(name)
-    if m is None:
-        return None
-    head, a, b = m.groups()
-    if head == "omega":
-        return rf"\omega_{{{a}}}" if b is None else rf"\omega_{{{a}/{b}}}"
-    if b is None:
-        return None
-    return f"{'e' if head == 'e' else chr(92) + 'eta'}_{{{a},{b}}}"
-
-
-def latex(expr) -> str:
-    """LaTeX for a sympy expression, equation or matrix, gearlib's symbols in the book's
-    notation (see the module documentation)."""
-    names = {}
-    for sym in getattr(expr, "free_symbols", ()):
-        tex = _symbol_tex(sym.name) if isinstance(sym, sympy.Symbol) and type(sym) is sympy.Symbol else None
-        if tex is not None:
-            names[sym] = tex
-    return sympy.latex(expr, symbol_names=names)
+__all__ = ["Number", "number", "Formula", "formula"]
 
 
 class Number:
@@ -69,11 +35,9 @@ class Number:
         v = self.value
         if isinstance(v, Fraction):
             v = sympy.Rational(v.numerator, v.denominator)
-        if isinstance(v, sympy.MatrixBase):
-            return str(v), latex(v)
         if isinstance(v, sympy.Basic):
-            if v.is_Rational or v.free_symbols or isinstance(v, sympy.Eq):
-                return str(v), latex(v)
+            if v.is_Rational or v.free_symbols:
+                return str(v), sympy.latex(v)
             v = complex(v.evalf(30))
         z = complex(v)
         d = self.digits
@@ -97,7 +61,46 @@ def number(value, digits: int = 6) -> Number:
     return Number(value, digits)
 
 
-def formula(expr) -> Number:
-    """Wrap a sympy expression, equation or matrix for display in the book's notation
-    (``e_{1,2}``; see the module documentation)."""
-    return Number(expr)
+_TWO_SUBSCRIPTS = re.compile(r"^([A-Za-z]+)_([^_]+)_([^_]+)$")
+
+
+def _tex_name(name: str) -> str | None:
+    m = _TWO_SUBSCRIPTS.match(name)
+    if m is None:
+        return None
+    head, a, b = m.groups()
+    head = {"theta": r"\theta", "omega": r"\omega"}.get(head, head)
+    return f"{head}_{{{a},{b}}}"
+
+
+class Formula:
+    """A sympy expression (or matrix) shown as the book writes it: a symbol with two
+    subscripts, such as the gear ratio ``e_4_1``, prints as :math:`e_{4,1}`, not sympy's
+    :math:`e_{4 1}` (ambiguous once links reach 10). The text form is sympy's."""
+
+    def __init__(self, expr):
+        self.expr = expr
+
+    def latex(self, **settings) -> str:
+        """The LaTeX form; *settings* go to ``sympy.latex`` (``order="none"`` keeps the terms of
+        an expression built with ``evaluate=False`` in the order written)."""
+        expr = self.expr
+        names = {s: t for s in getattr(expr, "free_symbols", ()) if (t := _tex_name(str(s))) is not None}
+        return sympy.latex(expr, symbol_names=names, **settings)
+
+    def __repr__(self) -> str:
+        return str(self.expr)
+
+    def _repr_latex_(self) -> str:
+        return f"$\\displaystyle {self.latex()}$"
+
+
+def formula(expr) -> Formula:
+    """Wrap a sympy expression for display with the book's subscripts (see :class:`Formula`).
+
+    >>> import sympy, gearlib as gl
+    >>> e41, e52, e21 = sympy.symbols("e_4_1 e_5_2 e_2_1")
+    >>> gl.formula(e41 / (1 - e52 * e21)).latex()
+    '\\\\frac{e_{4,1}}{- e_{2,1} e_{5,2} + 1}'
+    """
+    return Formula(expr)

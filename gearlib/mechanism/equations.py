@@ -57,9 +57,9 @@ class WillisEquation:
         return self.lhs - self.rhs
 
     def _repr_latex_(self) -> str:
-        from .display import latex
+        from .display import Formula
 
-        return f"${latex(self.lhs)} = {latex(self.rhs)}$"
+        return f"${Formula(self.lhs).latex()} = {Formula(self.rhs).latex()}$"
 
     def __str__(self) -> str:
         return f"{self.lhs} = {self.rhs}"

@@ -290,9 +290,8 @@ class Solution:
         )
         return (
             f"<table><caption>Speeds relative to link {self.constraints.ground} ({self.method})</caption>"
-            f"<tr><th>link</th><th>name</th><th>&omega;</th></tr>{rows}"
-            + (f"<tr><td colspan='3'><small>{html.escape(note)}</small></td></tr>" if (note := self.tilted_note()) else "")
-            + "</table>"
+            f"<tr><th>link</th><th>name</th><th>&omega;</th></tr>{rows}</table>"
+            + (f"<p><small>{html.escape(note)}</small></p>" if (note := self.tilted_note()) else "")
         )
 
     def plot(self, ax=None, **kwargs):

@@ -174,7 +174,8 @@ def plot_speeds(solution, ax=None, *, links=None, title=None, unit="rad/s"):
     :func:`~gearlib.mechanism.tilted_links`) is shown by its speed relative to the link it
     turns on, labelled ``2/6``: that is its spin about its own axis, where its value in the
     Willis equations adds rates about different axes. A complex speed (Penaud and Alazard's
-    weights, chapter 4) is drawn by its magnitude, its angle written on the bar in radians.
+    weights, chapter 4) is drawn by its magnitude, its angle written on the bar (in radians,
+    as the x-axis says).
     """
     import textwrap
 
@@ -193,11 +194,13 @@ def plot_speeds(solution, ax=None, *, links=None, title=None, unit="rad/s"):
     ax.set_xticks(range(len(links)), names, fontsize=8)
     ax.axhline(0, color="black", linewidth=0.8)
     ax.set_ylabel(f"angular velocity ({unit})" if unit else "angular velocity")
+    if any(not _is_real(z) for z in values):
+        ax.set_xlabel("r∠φ: magnitude r, angle φ in rad", fontsize=8)
     angled = False
     for bar, z, h in zip(bars, values, heights):
         text = f"{h:.3g}"
         if not _is_real(z):
-            text, angled = f"{abs(z):.3g}\n∠{np.angle(z):.2f} rad", True
+            text, angled = f"{abs(z):.3g}\n∠{np.angle(z):.2f}", True
         ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
                     va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
                     textcoords="offset points")
@@ -210,7 +213,9 @@ def _title(ground, shown) -> str:
     rel = [(x, ref) for x, ref, _ in shown if ref is not None]
     text = f"speeds, link {ground} fixed"
     if rel:
-        text += "; " + ", ".join(f"{x}/{ref}" for x, ref in rel) + " relative to the link it turns on"
+        refs = {ref for _, ref in rel}
+        text += "; " + ", ".join(f"{x}/{ref}" for x, ref in rel) + ": relative to " + (
+            f"{refs.pop()}" if len(refs) == 1 else "the link each turns on")
     return text
 
 
@@ -261,10 +266,14 @@ def plot_speed_sweep(mech: Mechanism, ground=None, inputs=None, *, gear, values,
                 label=label if real else f"|{label}|")
     ax.axhline(0, color="black", linewidth=0.8)
     ax.axvline(mine[0].teeth, color="0.6", linestyle=":", linewidth=1)
-    what = f"teeth of gear {gear}" + (f" in pair {pair[0]}-{pair[1]}" if "_in_" in key and pair else "")
+    def named(x):
+        return f"{mech.link(x).name} {x}" if mech.link(x).name else f"gear {x}"
+
+    what = f"teeth of {named(gear)}" + (f", meshing gear {[g for g in pair if g != gear][0]}"
+                                         if "_in_" in key and pair else "")
     if followed:
-        what += "\n(" + ", ".join(f"gear {x}" for x in followed) + " follow" + ("s" if len(followed) == 1 else "") \
-            + " so that the planet fits)"
+        what += "\n(" + " and ".join(named(x) for x in followed) + (" follows" if len(followed) == 1 else " follow") \
+            + ": N_ring = N_sun + 2 N_planet)"
     ax.set_xlabel(what)
     ax.set_ylabel(f"angular velocity ({unit})" if unit else "angular velocity")
     if len(shown) > 1:

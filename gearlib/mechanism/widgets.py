@@ -294,7 +294,7 @@ class SpeedExplorer(Explorer):
     display the object (or its :attr:`widget`) in JupyterLab.
     """
 
-    def __init__(self, mech: Mechanism, ground=None, inputs=None, *, pairs=None, max_teeth: int = 120):
+    def __init__(self, mech: Mechanism, ground=None, inputs=None, *, pairs=None, links=None, max_teeth: int = 120):
         from .teeth import followers, gears
 
         self.mechanism = mech
@@ -302,6 +302,7 @@ class SpeedExplorer(Explorer):
         self.inputs = inputs if inputs is not None else {x: 1 for x in mech.inputs}
         self.followers = followers(mech, pairs)
         self.gears = [g for g in gears(mech, pairs) if g.key not in self.followers]
+        self.links = links
         self.max_teeth = max_teeth
         self._start()
 
@@ -343,8 +344,8 @@ class SpeedExplorer(Explorer):
         for ring, (sun, planet) in self.followers.items():
             self.text += f"; {ring} = {sun} + 2 {planet} = {now[ring]} (so that the planet fits)"
         if self._canvas is None:
-            self._canvas = Canvas(margins=(0.12, 0.98, 0.22, 0.9), keep_axes=True, stable_limits=True)
-        self.image = self._canvas.png(lambda ax: plot_speeds(sol, ax=ax))
+            self._canvas = Canvas(margins=(0.17, 0.98, 0.22, 0.9), keep_axes=True, stable_limits=True)
+        self.image = self._canvas.png(lambda ax: plot_speeds(sol, ax=ax, links=self.links))
         self._show()
         return self.image
 
@@ -358,7 +359,8 @@ class SpeedExplorer(Explorer):
                                      for g in self.gears})
 
 
-def speed_explorer(mech: Mechanism, ground=None, inputs=None, *, pairs=None, max_teeth: int = 120) -> SpeedExplorer:
+def speed_explorer(mech: Mechanism, ground=None, inputs=None, *, pairs=None, links=None,
+                   max_teeth: int = 120) -> SpeedExplorer:
     """A widget: tooth-number sliders for the gears of ``pairs`` (default: all) and a bar chart
-    of every link's speed. Static twin: :func:`plot_speed_sweep`."""
-    return SpeedExplorer(mech, ground, inputs, pairs=pairs, max_teeth=max_teeth)
+    of the speeds of ``links`` (default: every link). Static twin: :func:`plot_speed_sweep`."""
+    return SpeedExplorer(mech, ground, inputs, pairs=pairs, links=links, max_teeth=max_teeth)
