@@ -228,7 +228,7 @@ def plot_speed_sweep(mech: Mechanism, ground=None, inputs=None, *, gear, values,
     carries several gears (a stepped planet), ``pair`` names the gear pair that says which.
     Each step changes the teeth with :func:`~gearlib.mechanism.set_teeth`, so a planetary
     set stays buildable: sweep its ring and the planet follows. Links are shown as in
-    :func:`plot_speeds` (a tilted link relative to the link it turns on); a complex speed by
+    :func:`~gearlib.plot_speeds` (a tilted link relative to the link it turns on); a complex speed by
     its magnitude.
     """
     from ..errors import DataFormatError

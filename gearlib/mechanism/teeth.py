@@ -3,10 +3,10 @@
 The data give tooth numbers per gear *pair*, so a planet that meshes a sun and a ring appears
 twice, once in each pair. Changing it in one pair only would give one planet two tooth
 numbers; changing the ring alone would give a planet that no longer fits between sun and
-ring. :func:`gears` lists the gears of a mechanism, one entry per gear (a link that meshes
+ring. :func:`~gearlib.mechanism.gears` lists the gears of a mechanism, one entry per gear (a link that meshes
 with the same tooth number in several pairs is one gear: a planet, an idler; a link with
 different tooth numbers carries several gears: a stepped planet, a compound shaft).
-:func:`set_teeth` changes gears by their key and keeps every simple planetary set
+:func:`~gearlib.mechanism.set_teeth` changes gears by their key and keeps every simple planetary set
 concentric (see :mod:`gearlib.mechanism.assembly`): with one module for all gears,
 ``N_ring = N_sun + 2 N_planet``. Change the ring or the sun and the planet follows; change
 the planet and the ring follows. The widgets of chapters 0 and 1 and their static twins use

@@ -291,7 +291,7 @@ class SpeedExplorer(Explorer):
     one tooth number), none for a ring that must follow its sun and planet so that the planet
     fits (:func:`~gearlib.mechanism.followers`); the text line gives its tooth number. Use
     :meth:`update` to compute and redraw without a browser (this is what a slider calls), and
-    display the object (or its :attr:`widget`) in JupyterLab.
+    display the object (or its ``widget``) in JupyterLab.
     """
 
     def __init__(self, mech: Mechanism, ground=None, inputs=None, *, pairs=None, links=None, max_teeth: int = 120):
