@@ -126,7 +126,7 @@ def test_encode_png_is_read_back_by_pillow():
 
 def _sweeps():
     """Each widget with a sequence of states that moves limits, titles, tick labels and legends."""
-    k = "N_1_in_1_2"
+    k = "N_1"
     laus = gl.catalog.load("laus_epicyclic")
     gears = gl.gains.transmission_explorer(gl.catalog.load("liu_chen_transmission"),
                                                   gl.transmission.LIU_CHEN_MODES)

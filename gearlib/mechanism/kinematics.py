@@ -33,6 +33,8 @@ Fraction(2, 7)
 
 from __future__ import annotations
 
+import html
+
 import cmath
 import warnings
 from collections.abc import Mapping, Sequence
@@ -253,12 +255,29 @@ class Solution:
             out.append((lk.id, lk.name or "", format_value(v, digits)))
         return out
 
+    def tilted_note(self) -> str:
+        """A sentence on the links whose axes are tilted to the ground's (bevel planets,
+        :func:`~gearlib.mechanism.tilted_links`): their value is no angular velocity; empty when
+        there are none."""
+        from .graph import tilted_links
+
+        tilted = tilted_links(self.mechanism, self.constraints.ground)
+        if not tilted:
+            return ""
+        pairs = ", ".join(f"ω{x} − ω{ref}" for x, ref in tilted.items())
+        links = ", ".join(str(x) for x in tilted)
+        return (f"Link{'s' if len(tilted) > 1 else ''} {links} turn{'' if len(tilted) > 1 else 's'} about an axis "
+                f"tilted to the ground's: {'their' if len(tilted) > 1 else 'its'} ω is a value of the Willis "
+                f"equations, not an angular velocity; the spin relative to the link it turns on ({pairs}) is one.")
+
     def __str__(self) -> str:
         rows = self.table()
         w = max(len(str(r[0])) for r in rows)
         n = max(len(r[1]) for r in rows)
         head = f"speeds of {self.mechanism.name!r} (ground {self.constraints.ground}, method {self.method})"
-        return "\n".join([head] + [f"  {str(i):>{w}}  {name:<{n}}  {val}" for i, name, val in rows])
+        note = self.tilted_note()
+        return "\n".join([head] + [f"  {str(i):>{w}}  {name:<{n}}  {val}" for i, name, val in rows]
+                         + ([note] if note else []))
 
     def _repr_pretty_(self, p, cycle):
         """IPython's text/plain (the PDF book, a terminal): the table of :meth:`__str__`, not the
@@ -272,6 +291,7 @@ class Solution:
         return (
             f"<table><caption>Speeds relative to link {self.constraints.ground} ({self.method})</caption>"
             f"<tr><th>link</th><th>name</th><th>&omega;</th></tr>{rows}</table>"
+            + (f"<p><small>{html.escape(note)}</small></p>" if (note := self.tilted_note()) else "")
         )
 
     def plot(self, ax=None, **kwargs):

@@ -13,12 +13,11 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
-import textwrap
 import numpy as np
 from .graph import to_networkx
 from .data import Mechanism
 
-__all__ = ['style', 'graph_layout', 'draw_graph', 'plot_speeds', 'plot_ratio_sweep']
+__all__ = ['style', 'graph_layout', 'draw_graph', 'plot_speeds', 'plot_speed_sweep', 'plot_ratio_sweep']
 
 
 _STYLE = {
@@ -142,33 +141,144 @@ def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, 
     return ax
 
 
-def plot_speeds(solution, ax=None, *, links=None, title=None):
+def _shown(mech, ground, links):
+    """``(link, reference or None, label)`` per link: a tilted link (a bevel planet,
+    :func:`~gearlib.mechanism.tilted_links`) is shown by its speed relative to the link it
+    turns on, which is an angular velocity; its own Willis-equation value is not."""
+    from .graph import tilted_links
+
+    tilted = tilted_links(mech, ground)
+    out = []
+    for x in links:
+        name = mech.link(x).name
+        if x in tilted:
+            ref = tilted[x]
+            out.append((x, ref, f"{x}/{ref}" + (f" {name}" if name else "")))
+        else:
+            out.append((x, None, f"{x} {name}" if name else str(x)))
+    return out
+
+
+def _values(z, mech, shown):
+    return np.array([z[mech.index[x]] - (z[mech.index[ref]] if ref is not None else 0) for x, ref, _ in shown])
+
+
+def _is_real(z) -> bool:
+    return abs(z.imag) <= 1e-12 * max(1.0, abs(z))
+
+
+def plot_speeds(solution, ax=None, *, links=None, title=None, unit="rad/s"):
     """Bar chart of link speeds (relative to the ground) from a :class:`~gearlib.Solution`.
 
-    Complex speeds (bevel trains in Penaud's method) are drawn by magnitude, with their
-    angle written on the bar.
+    A link whose axis is tilted to the ground's (a bevel planet:
+    :func:`~gearlib.mechanism.tilted_links`) is shown by its speed relative to the link it
+    turns on, labelled ``2/6``: that is its spin about its own axis, where its value in the
+    Willis equations adds rates about different axes. A complex speed (Penaud and Alazard's
+    weights, chapter 4) is drawn by its magnitude, its angle written on the bar (in radians,
+    as the x-axis says).
     """
+    import textwrap
+
     ax = _axes(ax, figsize=(6.0, 3.2))
     mech = solution.mechanism
+    ground = solution.constraints.ground
     links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))
-    values = np.array([complex(solution.as_complex()[mech.index[x]]) for x in links])
-    is_complex = np.any(np.abs(values.imag) > 1e-12 * np.maximum(1.0, np.abs(values)))
-    heights = np.abs(values) if is_complex else values.real
+    shown = _shown(mech, ground, links)
+    values = _values(solution.as_complex(), mech, shown)
+    heights = np.array([z.real if _is_real(z) else abs(z) for z in values])
     # names wrapped to the width of a bar slot (about 70 characters across at this size)
     width = max(8, 70 // max(1, len(links)))
-    names = [f"{x}\n{textwrap.fill(mech.link(x).name, width)}" if mech.link(x).name else str(x) for x in links]
-    colors = ["0.6" if x == solution.constraints.ground else "tab:blue" for x in links]
+    names = [textwrap.fill(label, width) for _, _, label in shown]
+    colors = ["0.6" if x == ground else ("tab:orange" if ref is not None else "tab:blue") for x, ref, _ in shown]
     bars = ax.bar(range(len(links)), heights, color=colors)
     ax.set_xticks(range(len(links)), names, fontsize=8)
     ax.axhline(0, color="black", linewidth=0.8)
-    ax.set_ylabel("|ω|" if is_complex else "ω")
+    ax.set_ylabel(f"angular velocity ({unit})" if unit else "angular velocity")
+    if any(not _is_real(z) for z in values):
+        ax.set_xlabel("r∠φ: magnitude r, angle φ in rad", fontsize=8)
+    angled = False
     for bar, z, h in zip(bars, values, heights):
-        text = f"{h:.3g}" if not is_complex else f"{abs(z):.3g}\n∠{np.angle(z):.2f}"
+        text = f"{h:.3g}"
+        if not _is_real(z):
+            text, angled = f"{abs(z):.3g}\n∠{np.angle(z):.2f}", True
         ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
                     va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
                     textcoords="offset points")
-    ax.margins(y=0.2 if is_complex else 0.12)  # room for the value labels under the title
-    ax.set_title(title if title is not None else f"speeds, link {solution.constraints.ground} fixed")
+    ax.margins(y=0.2 if angled else 0.12)  # room for the value labels under the title
+    ax.set_title(title if title is not None else _title(ground, shown))
+    return ax
+
+
+def _title(ground, shown) -> str:
+    rel = [(x, ref) for x, ref, _ in shown if ref is not None]
+    text = f"speeds, link {ground} fixed"
+    if rel:
+        refs = {ref for _, ref in rel}
+        text += "; " + ", ".join(f"{x}/{ref}" for x, ref in rel) + ": relative to " + (
+            f"{refs.pop()}" if len(refs) == 1 else "the link each turns on")
+    return text
+
+
+def plot_speed_sweep(mech: Mechanism, ground=None, inputs=None, *, gear, values, pair=None, links=None, ax=None,
+                     title=None, unit="rad/s"):
+    """Every link's speed as the tooth number of one gear varies: the static twin of
+    :func:`~gearlib.mechanism.speed_explorer`.
+
+    ``gear`` is the link whose gear takes each tooth number of ``values``; when the link
+    carries several gears (a stepped planet), ``pair`` names the gear pair that says which.
+    Each step changes the teeth with :func:`~gearlib.mechanism.set_teeth`, so a planetary
+    set stays buildable: sweep its ring and the planet follows. Links are shown as in
+    :func:`~gearlib.plot_speeds` (a tilted link relative to the link it turns on); a complex speed by
+    its magnitude.
+    """
+    from ..errors import DataFormatError
+    from .kinematics import speeds
+    from .teeth import gears, set_teeth
+
+    ax = _axes(ax, figsize=(6.0, 3.4))
+    gear = mech.resolve(gear)
+    ground = mech.ground if ground is None else mech.resolve(ground)
+    inputs = inputs if inputs is not None else {x: 1 for x in mech.inputs}
+    mine = [g for g in gears(mech) if g.link == gear]
+    if pair is not None:
+        gp, _ = mech.gear_pair(*pair)
+        mine = [g for g in mine if gp.gears in g.pairs]
+    if len(mine) != 1:
+        raise DataFormatError(
+            f"plot_speed_sweep: link {gear} carries {'no gear with teeth' if not mine else 'several gears'}"
+            + ("" if not mine else f" ({', '.join(g.key for g in mine)}); name the gear pair with pair=(a, b)"))
+    key = mine[0].key
+    links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))
+    shown = _shown(mech, ground, [x for x in links if x != ground])
+    rows, followed = [], {}
+    for n in values:
+        changed = set_teeth(mech, {key: n})
+        for g_old, g_new in zip(gears(mech), gears(changed)):
+            if g_old.key != key and g_old.teeth != g_new.teeth:
+                followed[g_old.link] = g_old.key
+        rows.append(_values(speeds(changed, ground, inputs).as_complex(), mech, shown))
+    rows = np.array(rows).reshape(len(rows), len(shown))
+    xs = list(values)
+    for j, (_, _, label) in enumerate(shown):
+        col = rows[:, j]
+        real = all(_is_real(z) for z in col)
+        ax.plot(xs, col.real if real else np.abs(col), marker="o", markersize=3,
+                label=label if real else f"|{label}|")
+    ax.axhline(0, color="black", linewidth=0.8)
+    ax.axvline(mine[0].teeth, color="0.6", linestyle=":", linewidth=1)
+    def named(x):
+        return f"{mech.link(x).name} {x}" if mech.link(x).name else f"gear {x}"
+
+    what = f"teeth of {named(gear)}" + (f", meshing gear {[g for g in pair if g != gear][0]}"
+                                         if "_in_" in key and pair else "")
+    if followed:
+        what += "\n(" + " and ".join(named(x) for x in followed) + (" follows" if len(followed) == 1 else " follow") \
+            + ": N_ring = N_sun + 2 N_planet)"
+    ax.set_xlabel(what)
+    ax.set_ylabel(f"angular velocity ({unit})" if unit else "angular velocity")
+    if len(shown) > 1:
+        ax.legend(fontsize=8, ncols=2)
+    ax.set_title(title if title is not None else _title(ground, shown))
     return ax
 
 
