@@ -25,7 +25,7 @@ import numpy as np
 
 from .data import Mechanism
 from .kinematics import speeds
-from .plot import plot_speed_sweep  # noqa: F401  (the static twin, offered here too)
+from .sweep import plot_speed_sweep  # noqa: F401  (the static twin, offered here too)
 
 __all__ = ["Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png", "encode_png",
            "with_snapshot"]
