@@ -96,14 +96,14 @@ class Linkage:
         for p in self.ports:
             if [q.name for q in self.ports].count(p.name) > 1:
                 raise DuplicateEdgeError(f"two ports are called {p.name}")
+            if p.joint is not None and p.joint not in joints:
+                raise UnknownLinkError(f"port {p.name} is on joint {p.joint!r}, which is not a joint; joints are "
+                                       f"{', '.join(joints)}")
             if p.name in seen and p.name != p.joint:
                 raise DuplicateEdgeError(f"port {p.name}: the name is already a joint or a coupling (a port on a joint "
                                          "may take its joint's name)")
             if p.joint is not None:
-                j = joints.get(p.joint)
-                if j is None:
-                    raise UnknownLinkError(f"port {p.name} is on joint {p.joint!r}, which is not a joint; joints are "
-                                           f"{', '.join(joints)}")
+                j = joints[p.joint]
                 if j.kind not in ("revolute", "prismatic", "cylindrical"):
                     raise DataFormatError(f"port {p.name}: a {j.kind} joint has no single freedom to drive; put the "
                                           "port on a revolute, prismatic or cylindrical joint")

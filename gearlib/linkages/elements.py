@@ -66,7 +66,8 @@ def _vector(value, dim: int, where: str, *, unit: bool = False) -> tuple:
         n = math.sqrt(sum(x * x for x in out))
         if n < 1e-12:
             raise DataFormatError(f"{where}: a direction cannot be the zero vector")
-        out = [x / n for x in out]
+        if abs(n - 1.0) > 4e-16:  # a unit vector stays as written (saving and loading change nothing)
+            out = [x / n for x in out]
     return tuple(out)
 
 
