@@ -116,32 +116,42 @@ class Linkage:
                     raise DataFormatError(f"port {p.name}: its point has {len(p.point)} coordinates, the joints {dim}")
 
     def _check_tasks(self):
+        for task in self.tasks:
+            self.check_task(task)
+
+    def check_task(self, task) -> None:
+        """Raise a clear error when *task* does not fit this linkage: unknown joints or ports,
+        a wrong number of coordinates, or not one motion input per degree of freedom."""
         joints = {j.name: j for j in self.joints}
         ports = {p.name: p for p in self.ports}
-        for task in self.tasks:
-            where = f"task {task.name}"
-            for name, exprs in task.motion:
-                if name in ports and ports[name].kind == "load":
-                    need = len(ports[name].point)
-                    what = f"the position of port {name}'s point"
-                elif name in joints or (name in ports and ports[name].joint in joints):
-                    j = joints.get(name) or joints[ports[name].joint]
-                    if j.kind not in ("revolute", "prismatic"):
-                        raise DataFormatError(f"{where}: joint {j.name} ({j.kind}) has no single coordinate; drive a "
-                                              "revolute or prismatic joint, or a load port's point")
-                    need, what = 1, f"joint {j.name}'s {'angle' if j.kind == 'revolute' else 'displacement'}"
-                else:
-                    raise UnknownLinkError(f"{where}: motion {name!r} is neither a joint nor a load port")
-                if exprs and len(exprs) != need:
-                    raise DataFormatError(f"{where}: {what} has {need} coordinate(s), got {len(exprs)}")
-            for name, _ in task.actions:
-                if name not in ports:
-                    raise UnknownLinkError(f"{where}: action {name!r} is not a port; ports are "
-                                           f"{', '.join(ports) or 'none'}")
-            given = sum(len(ports[n].point) if n in ports and ports[n].kind == "load" else 1 for n, _ in task.motion)
-            if given != self.dof:
-                raise InputError(f"{where}: the linkage has {self.dof} degree(s) of freedom, the task gives {given} "
-                                 f"motion input(s)")
+        where = f"task {task.name}"
+        sampled = task.samples[1] if task.samples is not None else {}
+        for name, exprs in task.motion:
+            if name in ports and ports[name].kind == "load":
+                need = len(ports[name].point)
+                what = f"the position of port {name}'s point"
+            elif name in joints or (name in ports and ports[name].joint in joints):
+                j = joints.get(name) or joints[ports[name].joint]
+                if j.kind not in ("revolute", "prismatic"):
+                    raise DataFormatError(f"{where}: joint {j.name} ({j.kind}) has no single coordinate; drive a "
+                                          "revolute or prismatic joint, or a load port's point")
+                need, what = 1, f"joint {j.name}'s {'angle' if j.kind == 'revolute' else 'displacement'}"
+            else:
+                raise UnknownLinkError(f"{where}: motion {name!r} is neither a joint nor a load port")
+            got = len(exprs) if name not in sampled else sampled[name][0].shape[1]
+            if got != need:
+                raise DataFormatError(f"{where}: {what} has {need} coordinate(s), got {got}")
+        for name, _ in task.actions:
+            if name not in ports:
+                raise UnknownLinkError(f"{where}: action {name!r} is not a port; ports are "
+                                       f"{', '.join(ports) or 'none'}")
+        for name, _ in task.roles:
+            if name not in ports:
+                raise UnknownLinkError(f"{where}: a role for {name!r}, which is not a port")
+        given = sum(len(ports[n].point) if n in ports and ports[n].kind == "load" else 1 for n, _ in task.motion)
+        if given != self.dof:
+            raise InputError(f"{where}: the linkage has {self.dof} degree(s) of freedom, the task gives {given} "
+                             f"motion input(s)")
 
     # ------------------------------------------------------------------ building
     @classmethod

@@ -198,6 +198,7 @@ def _task(linkage, task) -> Task:
 def run(linkage, task, *, ramp=RAMP, keep_poses: bool = True) -> TaskResult:
     """Follow *task* (a :class:`Task` or the name of one of the linkage's tasks) sample by sample."""
     task = _task(linkage, task)
+    linkage.check_task(task)
     net = make_network(linkage)
     ports = {p.name: p for p in linkage.ports}
     roles = {p.name: p.role for p in linkage.ports}
