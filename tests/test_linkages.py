@@ -76,6 +76,42 @@ def test_slider_crank_efficiency_equals_the_closed_forms_and_a_statics_integral(
     assert abs(res.energy_in - res.energy_out - sum(res.losses().values())) < 1e-9 * res.energy_in
 
 
+@pytest.mark.parametrize("deg", [0.0, 37.0, 250.0])
+def test_one_turn_of_an_offset_slider_crank_drawn_anywhere(deg):
+    """With the slide line at height e the dead centres move off 0 and pi and the normal force
+    changes sign twice; a turn is still integrated from kink to kink, whatever pose the data
+    draw. Reference: the statics of test 1 with the offset, integrated by quad piecewise."""
+    e, a1, a2, mu = 0.5, 1.0, 3.0, 0.1
+    th0 = math.radians(deg)
+    bx0, by0 = a1 * math.cos(th0), a1 * math.sin(th0)
+    cx0 = bx0 + math.sqrt(a2 ** 2 - (by0 - e) ** 2)
+    linkage = L.Linkage.from_dict({
+        "space": "planar", "links": [0, 1, 2, 3], "ground": 0,
+        "joints": [{"name": "A", "kind": "revolute", "links": [0, 1], "point": [0, 0]},
+                   {"name": "B", "kind": "revolute", "links": [1, 2], "point": [bx0, by0]},
+                   {"name": "C", "kind": "revolute", "links": [2, 3], "point": [cx0, e]},
+                   {"name": "D", "kind": "prismatic", "links": [3, 0], "point": [cx0, e], "axis": [1, 0],
+                    "friction": {"mu": mu}}],
+        "ports": [{"name": "A", "joint": "A", "role": "input"}, {"name": "D", "joint": "D", "role": "output"}]})
+    res = L.cycle(linkage, "A", {"A": 1.0})
+
+    def slider_power(t):
+        bx, by = a1 * math.cos(t), a1 * math.sin(t)
+        root = math.sqrt(a2 ** 2 - (by - e) ** 2)
+        cx = bx + root
+        v = -a1 * math.sin(t) - a1 * math.cos(t) * (by - e) / root
+        ex, ey = (cx - bx) / a2, (e - by) / a2
+        s = -1.0 / (bx * ey - by * ex)
+        n = s * ey
+        f = -mu * abs(n) * math.copysign(1.0, v)
+        return (s * ex - f) * v
+
+    kinks = sorted([math.asin(e / (a1 + a2)), math.pi + math.asin(e / (a2 - a1)), math.pi / 6, 5 * math.pi / 6])
+    edges = kinks + [kinks[0] + 2 * math.pi]
+    out = -sum(quad(slider_power, a, b, epsabs=1e-13, epsrel=1e-13, limit=200)[0] for a, b in zip(edges, edges[1:]))
+    assert abs(res.efficiency - out / (2 * math.pi)) < 1e-9
+
+
 def test_the_digest_instances_of_eqs_120_and_123():
     assert round(closed_form(1, 3, 0.1), 7) == 0.9779364 and round(closed_form(1, 3, 0.1, False), 7) == 0.9784127
     assert round(L.slider_crank_efficiency(0.05, 0.2, 0.15), 7) == 0.9756099

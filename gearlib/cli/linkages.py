@@ -105,9 +105,7 @@ def _task(args, linkage):
         if not actions:
             raise InputError(f"--cycle {j.name}: give the known action(s) with --action PORT=VALUE (e.g. the torque "
                              f"at {j.name})")
-        steps = args.steps or 16
-        return Task.from_dict("cycle", {"time": [-math.pi, math.pi], "steps": steps, "rule": "gauss",
-                                        "motion": {j.name: "t"}, "actions": actions})
+        return ("cycle", j.name, actions)
     if not linkage.tasks:
         raise InputError(f"{linkage.name!r} has no tasks: give --cycle JOINT or --trajectory PATH")
     task = linkage.task(args.task) if args.task is not None else linkage.tasks[0]
@@ -138,7 +136,12 @@ def _run(args) -> int:
         kw = {} if args.law is None else {"law": args.law}
         linkage = linkage.with_friction(args.mu, **kw)
     task = _task(args, linkage)
-    result = run(linkage, task)
+    if isinstance(task, tuple):  # one turn, split where the motions reverse
+        from ..linkages.rating import cycle
+
+        result = cycle(linkage, task[1], task[2], panels=args.steps or 8)
+    else:
+        result = run(linkage, task)
     if args.json:
         out = result.to_json()
         out["losses_total"] = sum(out["losses"].values())

@@ -16,6 +16,7 @@ spatial):
   5's :class:`~gearlib.davies.CouplingGraph`), unit screws at a pose, ``M_N`` and ``A_N``;
 * :func:`instant` - motions and actions at one instant, Algorithm 2 for the signs;
 * :func:`run` - a task followed in time: energies, efficiency, losses by coupling, reversals;
+  :func:`cycle` - one turn of a driven joint, split where the motions reverse;
   :func:`jump` - the change of an actuator force across a reversal;
 * :func:`slider_crank_efficiency`, :func:`slider_modes` - the thesis' closed forms (120),
   (123) and the friction modes of a slider (section 4.1);
@@ -43,7 +44,7 @@ EXPORTS = {
     "pose": ("Pose", "solve_pose", "mobility", "extrapolate"),
     "couplings": ("Coupling", "Column", "FrictionTerm", "LinkageNetwork", "network"),
     "solve": ("Instant", "instant", "solve_motions", "solve_actions", "primaries"),
-    "rating": ("TaskResult", "Reversal", "run", "jump"),
+    "rating": ("TaskResult", "Reversal", "run", "jump", "cycle"),
     "catalogue": ("slider_crank", "three_upu", "slider_block", "slider_crank_efficiency", "slider_modes",
                   "SliderModes"),
     "drawing": ("draw_linkage", "draw_linkage_graph", "plot_task_powers"),

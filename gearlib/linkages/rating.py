@@ -17,6 +17,7 @@ changes sign (a friction force or torque turns round there), refined by bisectio
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -27,7 +28,7 @@ from .pose import extrapolate, solve_pose
 from .solve import RAMP, instant, primaries, solve_motions
 from .tasks import Task
 
-__all__ = ["TaskResult", "Reversal", "run", "jump"]
+__all__ = ["TaskResult", "Reversal", "run", "jump", "cycle"]
 
 
 @dataclass(frozen=True)
@@ -233,6 +234,71 @@ def run(linkage, task, *, ramp=RAMP, keep_poses: bool = True) -> TaskResult:
     stats = {"solves": solves, "restarts": restarts, "most_solves_per_step": worst, "fallbacks": fallbacks,
              "tellegen": float(np.abs(powers.sum(axis=1)).max()), "poses": tuple(poses)}
     return TaskResult(linkage, task, times, task.weights(), powers, actions, motions, roles, stats)
+
+
+def cycle(linkage, joint, actions: dict, *, panels: int = 8, roles: dict | None = None,
+          start: float = -math.pi) -> TaskResult:
+    """One turn of the revolute *joint* at unit speed with the known *actions* (``{port: value}``),
+    integrated exactly enough for closed forms: a coarse pass finds the instants at which a
+    motion reverses or a force in a friction law changes sign (where the powers have a kink),
+    and each stretch between two of them, round the whole turn, gets *panels* panels of
+    Gauss-Legendre nodes."""
+    base = {"motion": {joint: "t"}, "actions": dict(actions), "roles": dict(roles or {})}
+    # Gauss nodes never fall on a panel's end: the coarse pass steps over the dead centres
+    coarse = run(linkage, Task.from_dict("cycle", {**base, "time": [start, start + 2 * math.pi], "steps": 12,
+                                                   "rule": "gauss"}))
+    cuts = {ev.time for ev in coarse.reversals()}
+    net = coarse.network
+    turn = 2 * math.pi
+    moving = np.abs(coarse.motions).max(axis=0) > 1e-8 * np.abs(coarse.motions).max()
+    first, last = coarse.times[0], coarse.times[-1]
+    for k in np.nonzero(moving)[0]:  # the stretch from the last node round to the first
+        if coarse.motions[-1, k] * coarse.motions[0, k] < 0:
+            cuts.add(coarse._root(k, last - turn, first, 1e-9))
+    forces = sorted({c for term in net.friction for _, cols, _ in term.groups for c in cols})
+    values = coarse.actions[:, forces]
+    wrapped = np.vstack([values[-1:], values])
+    times = np.r_[last - turn, coarse.times]
+    for k, col in enumerate(forces):
+        for i in np.nonzero(np.sign(wrapped[1:, k]) * np.sign(wrapped[:-1, k]) < 0)[0]:
+            cuts.add(_force_root(coarse, col, times[i], times[i + 1]))
+    cuts = sorted({start + (t - start) % turn for t in cuts})
+    # the turn starts at the first kink and ends there: every stretch runs from kink to kink
+    edges = [*cuts, cuts[0] + turn] if cuts else [start, start + turn]
+    parts = [run(linkage, Task.from_dict("cycle", {**base, "time": [a, b], "steps": panels, "rule": "gauss"}))
+             for a, b in zip(edges[:-1], edges[1:]) if b - a > 1e-9]
+    task = Task.from_dict("cycle", {**base, "time": [edges[0], edges[-1]], "steps": panels * len(parts),
+                                    "rule": "gauss"})
+    stats = {k: sum(p.stats[k] for p in parts) for k in ("solves", "restarts", "fallbacks")}
+    stats.update(most_solves_per_step=max(p.stats["most_solves_per_step"] for p in parts),
+                 tellegen=max(p.stats["tellegen"] for p in parts),
+                 poses=tuple(x for p in parts for x in p.stats["poses"]), pieces=len(parts))
+    cat = np.concatenate
+    return TaskResult(linkage, task, cat([p.times for p in parts]), cat([p.weights for p in parts]),
+                      cat([p.powers for p in parts]), cat([p.actions for p in parts]), cat([p.motions for p in parts]),
+                      parts[0].roles, stats)
+
+
+def _force_root(res, col, a, b, tol=1e-10):
+    """The instant between *a* and *b* at which the action column *col* changes sign (a friction
+    law's absolute value has its kink there), by bisection on instants solved afresh."""
+    def value(t):
+        inputs = res.task.inputs_at(t)
+        pose = solve_pose(res.linkage, {k: v[0] for k, v in inputs.items()}, res._nearest_pose(t))
+        now = instant(res.linkage, pose, speeds={k: v[1] for k, v in inputs.items()}, actions=res.task.actions_at(t))
+        return now.actions[col]
+
+    fa = value(a)
+    for _ in range(60):
+        if b - a < tol:
+            break
+        m = (a + b) / 2
+        fm = value(m)
+        if np.sign(fm) == np.sign(fa):
+            a, fa = m, fm
+        else:
+            b = m
+    return (a + b) / 2
 
 
 def jump(linkage, task, time: float, port, *, eps: float = 1e-7) -> float:
