@@ -9,6 +9,7 @@ reader chose); the design of 7.5 by its conditions.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 
@@ -33,8 +34,8 @@ def _g(a1, a2) -> float:
 
 
 def _crank_params(rng) -> dict:
-    a1 = rng.randint(20, 60)
-    return {"a1": a1, "a2": a1 * rng.randint(25, 60) // 10, "mu": rng.randint(6, 20) / 100}
+    a1 = rng.randint(3, 8) * 10
+    return {"a1": a1, "a2": a1 * rng.randint(20, 30) // 10, "mu": rng.randint(18, 30) / 100}
 
 
 # ----------------------------------------------------------------------------- 7.1, 7.2
@@ -43,7 +44,7 @@ def _crank_params(rng) -> dict:
     question="A slider-crank like the chapter's has a crank of a1 = {a1} mm and a coupler of a2 = {a2} mm; the "
              "slide has a Coulomb coefficient mu = {mu}. The crank drives with constant torque and speed. What is "
              "its efficiency over one turn?",
-    data={"a1": 40, "a2": 150, "mu": 0.12}, params=_crank_params,
+    data={"a1": 40, "a2": 90, "mu": 0.25}, params=_crank_params,
     answer=Value("efficiency", figures=4, mistakes=[
         Mistake(lambda e, p: math.pi / (math.pi + p["mu"] * _g(p["a1"], p["a2"])), "That is the efficiency with the "
                 "slider driving: here the crank drives, and the loss is taken from the output."),
@@ -65,7 +66,7 @@ def linkage_crank_efficiency(a1, a2, mu):
     minutes=10, kind="compute",
     question="The slider-crank of exercise 7.1 (a1 = {a1} mm, a2 = {a2} mm, mu = {mu}) is now driven by its slider; "
              "the crank takes a constant torque out at constant speed. What is its efficiency over one turn?",
-    data={"a1": 40, "a2": 150, "mu": 0.12}, params=_crank_params,
+    data={"a1": 40, "a2": 90, "mu": 0.25}, params=_crank_params,
     answer=Value("efficiency", figures=4, mistakes=[
         Mistake(lambda e, p: 1 - p["mu"] / math.pi * _g(p["a1"], p["a2"]), "That is the efficiency with the crank "
                 "driving. With the slider driving, the output is fixed and the friction loss is added to the input."),
@@ -81,32 +82,32 @@ def linkage_slider_efficiency(a1, a2, mu):
 
 
 # ----------------------------------------------------------------------------- 7.3
-_A1, _A2, _E, _TH = sympy.symbols("a1 a2 e theta")
+_A1, _A2, _H, _TH = sympy.symbols("a1 a2 h theta")
 
 
-def _offset_speed(e):
-    s = _A1 * sympy.sin(_TH) - e
+def _offset_speed(h):
+    s = _A1 * sympy.sin(_TH) - h
     return -_A1 * sympy.sin(_TH) - _A1 * sympy.cos(_TH) * s / sympy.sqrt(_A2 ** 2 - s ** 2)
 
 
 @register(
     "linkage_offset_speed", exercise="7.3", title="The slider's speed with an offset slide", stars=2, minutes=20,
     kind="derive",
-    question="Move the slide line of the slider-crank to the height e above the crank's centre A (C = (C_x, e)). "
+    question="Move the slide line of the slider-crank to the height h above the crank's centre A (C = (C_x, h)). "
              "With the crank at the angle theta, turning at unit speed, derive the slider's speed along x, "
-             "dC_x/dtheta, in a1, a2, e and theta.",
-    answer=Symbolic(("a1", "a2", "e", "theta"), mistakes=[
+             "dC_x/dtheta, in a1, a2, h and theta.",
+    answer=Symbolic(("a1", "a2", "h", "theta"), mistakes=[
         Mistake(lambda e, p: _offset_speed(0), "That is the speed without the offset: the coupler's vertical span is "
-                "a1 sin(theta) - e, not a1 sin(theta)."),
-        Mistake(lambda e, p: _offset_speed(-_E), "The offset has the wrong sign: C is at the height e, so the coupler "
-                "spans a1 sin(theta) - e vertically."),
+                "a1 sin(theta) - h, not a1 sin(theta)."),
+        Mistake(lambda e, p: _offset_speed(-_H), "The offset has the wrong sign: C is at the height h, so the coupler "
+                "spans a1 sin(theta) - h vertically."),
         Mistake(lambda e, p: -_A1 * sympy.sin(_TH), "That is the crank pin's speed along x alone: the coupler's "
                 "horizontal span changes too (differentiate the square root)."),
-    ], generic="Write C_x = B_x + sqrt(a2^2 - (B_y - e)^2) with B = a1 (cos theta, sin theta) and differentiate "
+    ], generic="Write C_x = B_x + sqrt(a2^2 - (B_y - h)^2) with B = a1 (cos theta, sin theta) and differentiate "
                "with respect to theta."),
 )
 def linkage_offset_speed():
-    return _offset_speed(_E)
+    return _offset_speed(_H)
 
 
 # ----------------------------------------------------------------------------- 7.4
@@ -216,14 +217,14 @@ class LinkageModel(Spec):
     "linkage_model_offset", exercise="7.4", title="Model an offset slider-crank", stars=2, minutes=25, kind="model",
     question="Write as data (for gl.linkages.Linkage.from_dict) a slider-crank with a crank of 1 turning in the "
              "frame at A (the origin), a coupler of 3, and a slider whose slide line runs along x at the height "
-             "e = {e} above A, Coulomb friction mu = 0.1 in the slide only. Name the crank's revolute joint 'A' and "
+             "h = {h} above A, Coulomb friction mu = 0.1 in the slide only. Name the crank's revolute joint 'A' and "
              "the slide's prismatic joint 'D'; put an input port on A and an output port on D. Any link ids and "
              "any drawn pose will do.",
-    data={"e": 0.5}, params=lambda rng: {"e": rng.choice([0.2, 0.3, 0.4, 0.6, 0.7, 0.8])},
+    data={"h": 0.5}, params=lambda rng: {"h": rng.choice([0.2, 0.3, 0.4, 0.6, 0.7, 0.8])},
     answer=LinkageModel(),
 )
-def linkage_model_offset(e):
-    return _offset_model(e)
+def linkage_model_offset(h):
+    return _offset_model(h)
 
 
 # ----------------------------------------------------------------------------- 7.5
@@ -350,8 +351,8 @@ def _tb(a1, a2, deg):
         Mistake(lambda e, p: -e, "That is what the printed factor gives: with it, coupling A turns backwards. Take "
                 "the factor from the null vector, t_A/(B_x - C_x)."),
         Mistake(lambda e, p: 1 / e, "You have the reciprocal: t_B per unit t_A."),
-        Mistake(lambda e, p: _tb(p["a1"], p["a2"], p["deg"])[1] / (_tb(p["a1"], p["a2"], p["deg"])[1]
-                - _tb(p["a1"], p["a2"], p["deg"])[0]), "That is t_C, the coupling between coupler and slider."),
+        Mistake(lambda e, p: _tb(p["a1"], p["a2"], p["deg"])[1] / (_tb(p["a1"], p["a2"], p["deg"])[0]
+                - _tb(p["a1"], p["a2"], p["deg"])[1]), "That is t_C, the coupling between coupler and slider."),
     ], generic="Take the null vector of the motion matrix with t_A = 1: its second entry is t_B, with B_x = a1 cos "
                "theta and C_x = B_x + sqrt(a2^2 - a1^2 sin^2 theta)."),
 )
@@ -368,6 +369,7 @@ _PINS = Choice(["it drops by less than one point", "it drops by one to five poin
                          "it drops by more than five points": ["more than five", "more than 5", "large"]})
 
 
+@functools.lru_cache(maxsize=16)
 def _half_lift(mu_pin):
     from ..linkages.io import load
     from ..linkages.rating import run
@@ -436,6 +438,7 @@ def linkage_virtual_work(mx, my, mz):
 
 
 # ----------------------------------------------------------------------------- 7.11
+@functools.lru_cache(maxsize=1)
 def _limb_losses():
     from ..linkages.io import load
     from ..linkages.rating import run

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import GearlibError, InputError
 from .couplings import network as make_network
 from .pose import extrapolate, solve_pose
 from .solve import RAMP, instant, primaries, solve_motions
@@ -293,7 +293,10 @@ def _force_root(res, col, a, b, tol=1e-10):
         if b - a < tol:
             break
         m = (a + b) / 2
-        fm = value(m)
+        try:
+            fm = value(m)
+        except GearlibError:  # a dead centre, where the force passes through infinity: the kink is here
+            return m
         if np.sign(fm) == np.sign(fa):
             a, fa = m, fm
         else:
