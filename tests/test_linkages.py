@@ -112,6 +112,38 @@ def test_one_turn_of_an_offset_slider_crank_drawn_anywhere(deg):
     assert abs(res.efficiency - out / (2 * math.pi)) < 1e-9
 
 
+def test_poses_from_a_position_function_give_the_same_rating():
+    """The slider-crank's frames in closed form (eq. 97) instead of the pose solver: the crank
+    turned by theta, the coupler by -asin(a1 sin theta / a2) about B, the slider slid along x."""
+    a1, a2 = 1.0, 3.0
+    crank = L.slider_crank(a1, a2, 0.1)
+
+    def rot(angle):
+        c, s = math.cos(angle), math.sin(angle)
+        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+    def frames(t):
+        b = np.array([a1 * math.cos(t), a1 * math.sin(t), 0.0])
+        phi = -math.asin(a1 * math.sin(t) / a2)
+        cx = b[0] + math.sqrt(a2 ** 2 - b[1] ** 2)
+        return {1: (rot(t), np.zeros(3)), 2: (rot(phi), b - rot(phi) @ np.array([a1, 0.0, 0.0])),
+                3: (np.eye(3), np.array([cx - (a1 + a2), 0.0, 0.0]))}
+
+    given = L.run(crank, "crank_drives", positions=frames)
+    solved = L.run(crank, "crank_drives")
+    assert abs(given.efficiency - solved.efficiency) < 1e-12
+    with pytest.raises(gl.GeometryError, match="does not close joint"):
+        L.run(crank, "crank_drives", positions=lambda t: {1: (rot(t), np.zeros(3))})
+
+
+def test_power_per_coupling_balances():
+    crank = L.load("laus_slider_crank")
+    now = L.instant(crank, L.solve_pose(crank, {"A": [0.9]}), speeds={"A": [1.0]}, actions={"A": 1.0})
+    per = now.coupling_powers()
+    assert set(per) == {"A", "B", "C", "D"} and per["B"] == per["C"] == 0.0
+    assert per["A"] == pytest.approx(1.0) and abs(sum(per.values())) < 1e-12 and per["D"] < 0
+
+
 def test_the_digest_instances_of_eqs_120_and_123():
     assert round(closed_form(1, 3, 0.1), 7) == 0.9779364 and round(closed_form(1, 3, 0.1, False), 7) == 0.9784127
     assert round(L.slider_crank_efficiency(0.05, 0.2, 0.15), 7) == 0.9756099

@@ -1,11 +1,12 @@
 """The book's linkages with other numbers, and the thesis' closed forms.
 
-* :func:`slider_crank` - the RRRP slider-crank (``laus_slider_crank``) with other lengths and
-  friction; :func:`slider_crank_efficiency` - its efficiency over one turn at constant power,
+* :func:`~gearlib.linkages.slider_crank` - the RRRP slider-crank (``laus_slider_crank``) with other lengths and
+  friction; :func:`~gearlib.linkages.slider_crank_efficiency` - its efficiency over one turn at constant power,
   Laus's eqs. (120) (the crank drives) and (123) (the slider drives);
-* :func:`three_upu` - the 3-UPU robot (``laus_3upu``) with other dimensions, friction laws, or
+* :func:`~gearlib.linkages.three_upu` - the 3-UPU robot (``laus_3upu``) with other dimensions, friction laws, or
   without split prismatic pairs (the thesis' comparison model, section 4.3.4.4);
-* :func:`slider_block` - a block on a guide loaded off its centre, and :func:`slider_modes`,
+* :func:`~gearlib.linkages.slider_block` - a block on a guide loaded off its centre, and
+  :func:`~gearlib.linkages.slider_modes`,
   the two friction modes of a slider (section 4.1) in closed form.
 
 >>> import gearlib as gl
@@ -103,7 +104,7 @@ def slider_block(length: float = 1.0, mu: float = 0.1, *, point=(0.0, 0.5), dire
 
 @dataclass(frozen=True)
 class SliderModes:
-    """What :func:`slider_modes` finds: the ``mode`` (1: one normal reaction on the line of the
+    """What :func:`~gearlib.linkages.slider_modes` finds: the ``mode`` (1: one normal reaction on the line of the
     load; 2: two reactions on opposite faces), the ``reactions`` and their ``places`` along the
     slider, and the ``friction`` force's size."""
 

@@ -1,10 +1,10 @@
 """Linkages as validated, immutable data: :class:`Linkage`.
 
-A linkage is links, joints between them (:class:`~gearlib.linkages.elements.Joint`: revolute,
+A linkage is links, joints between them (:class:`~gearlib.linkages.Joint`: revolute,
 prismatic, universal, spherical, cylindrical, with their geometry in the reference pose and
 their friction), ports where power enters or leaves
-(:class:`~gearlib.linkages.elements.Port`), and optionally named tasks
-(:class:`~gearlib.linkages.tasks.Task`). It is *planar* when its points have two coordinates
+(:class:`~gearlib.linkages.Port`), and optionally named tasks
+(:class:`~gearlib.linkages.Task`). It is *planar* when its points have two coordinates
 (motions and actions are then screws of order 3, ``{t; u, v}`` and ``{T; U, V}``) and
 *spatial* with three (order 6). A file may define ``parameters`` (names for numbers, such as
 the thesis' ``r_b`` and ``l_B``) and use them in expressions.
@@ -251,13 +251,13 @@ class Linkage:
     @cached_property
     def dof(self) -> int:
         """Degrees of freedom: the links' pose coordinates minus the rank of the joints'
-        constraints at the reference pose (:func:`gearlib.linkages.pose.mobility`)."""
+        constraints at the reference pose (:func:`gearlib.linkages.mobility`)."""
         from .pose import mobility
 
         return mobility(self)
 
     def with_friction(self, mu=None, **changes) -> Linkage:
-        """Every joint's friction with ``mu`` (and other :class:`Friction` fields) changed; a
+        """Every joint's friction with ``mu`` (and other :class:`~gearlib.linkages.Friction` fields) changed; a
         joint without friction gets it."""
         joints = []
         for j in self.joints:

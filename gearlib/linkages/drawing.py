@@ -3,13 +3,13 @@
 Every function takes ``ax=`` (a new figure when None), draws and returns the axes; none
 changes matplotlib's global state.
 
-* :func:`draw_linkage` - a kinematic sketch: links as bars between their joints, revolute and
+* :func:`~gearlib.linkages.draw_linkage` - a kinematic sketch: links as bars between their joints, revolute and
   universal joints as circles, a prismatic pair as a cylinder and its rod (a split pair shows
   its two annuli), the ground hatched, loads as arrows; spatial linkages in an oblique view;
-* :func:`draw_linkage_graph` - the coupling graph: links as vertices, couplings as directed
+* :func:`~gearlib.linkages.draw_linkage_graph` - the coupling graph: links as vertices, couplings as directed
   edges (a split pair's two couplings side by side, a virtual coupling dashed, the chords of
   the spanning tree grey);
-* :func:`plot_task_powers` - the ports' powers and the friction losses against time.
+* :func:`~gearlib.linkages.plot_task_powers` - the ports' powers and the friction losses against time.
 """
 
 from __future__ import annotations

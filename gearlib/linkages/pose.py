@@ -6,13 +6,13 @@ scalar equations (a revolute: its two copies of the point coincide and its axis 
 line; a universal joint: the point, and its two axes perpendicular; a prismatic: the head's
 point on the tail's line and no turning; ...); each motion input adds its own (a joint's
 angle or displacement from the reference pose, a load port's point at a position).
-:func:`solve_pose` solves them by Newton's method with the exact Jacobian, starting from a
+:func:`~gearlib.linkages.solve_pose` solves them by Newton's method with the exact Jacobian, starting from a
 *guess* (the reference pose, or the previous pose of a trajectory), and falls back on
 smaller steps of the inputs when a step is too large. A linkage that cannot close (a coupler
 too short to reach, an input out of range) raises a :class:`~gearlib.GeometryError` naming
 the joint that stays apart.
 
-The same Jacobian at the reference pose gives the degrees of freedom (:func:`mobility`).
+The same Jacobian at the reference pose gives the degrees of freedom (:func:`~gearlib.linkages.mobility`).
 
 >>> import gearlib as gl
 >>> crank = gl.linkages.load("laus_slider_crank")
@@ -86,6 +86,24 @@ class Pose:
     P: np.ndarray = field(repr=False)
     index: dict = field(repr=False)
     inputs: dict = field(default_factory=dict)
+
+    @classmethod
+    def from_frames(cls, linkage, frames: dict, inputs: dict | None = None, *, tol: float = 1e-8) -> Pose:
+        """A pose from a position function's frames ``{link: (R, p)}`` (links left out keep the
+        identity), checked against the joints: a pose that does not close raises a
+        :class:`~gearlib.GeometryError` naming the joint."""
+        sys_ = _system(linkage)
+        n = len(sys_.links)
+        R, P = np.tile(_I3, (n, 1, 1)), np.zeros((n, 3))
+        for link, (r, p) in frames.items():
+            if link not in sys_.index:
+                raise InputError(f"the position function gives a frame for {link!r}, which is not a link")
+            R[sys_.index[link]], P[sys_.index[link]] = np.asarray(r, dtype=float), _v3(p)
+        r, _, names = sys_.assemble(sys_.blocks(R, P))
+        if r.size and float(np.abs(r).max()) > tol:
+            k = int(np.argmax(np.abs(r)))
+            raise GeometryError(f"{linkage.name}: the given pose does not close joint {names[k]} ({abs(r[k]):.3g} apart)")
+        return cls(linkage, R, P, sys_.index, dict(inputs or {}))
 
     def frame(self, link) -> tuple:
         k = self.index[link]

@@ -1,12 +1,12 @@
 """A linkage doing a task: every instant solved in turn, energies, efficiency, losses.
 
-:func:`run` follows a :class:`~gearlib.linkages.tasks.Task` sample by sample: the pose from the
+:func:`~gearlib.linkages.run` follows a :class:`~gearlib.linkages.Task` sample by sample: the pose from the
 last pose (Newton), the motions, the actions by the thesis' Algorithm 2 continued from the
 last instant's signs, the power of every port and friction column. The energies are the
 integrals of those powers by the task's rule; the efficiency is the energy the outputs take
 out over the energy the inputs put in, ``eta = E_out / E_in`` (Laus 2011, section 4.3.4.2);
-the losses are the friction columns' energies, and :meth:`TaskResult.loss_shares` groups them
-by coupling, joint or kind. :meth:`TaskResult.reversals` lists the instants at which a motion
+the losses are the friction columns' energies, and :meth:`~gearlib.linkages.TaskResult.loss_shares` groups them
+by coupling, joint or kind. :meth:`~gearlib.linkages.TaskResult.reversals` lists the instants at which a motion
 changes sign (a friction force or torque turns round there), refined by bisection.
 
 >>> import gearlib as gl
@@ -24,7 +24,7 @@ import numpy as np
 
 from ..errors import GearlibError, InputError
 from .couplings import network as make_network
-from .pose import extrapolate, solve_pose
+from .pose import Pose, extrapolate, solve_pose
 from .solve import RAMP, instant, primaries, solve_motions
 from .tasks import Task
 
@@ -41,7 +41,7 @@ class Reversal:
 
 @dataclass(frozen=True)
 class TaskResult:
-    """The result of :func:`run` (see the module documentation)."""
+    """The result of :func:`~gearlib.linkages.run` (see the module documentation)."""
 
     linkage: object
     task: Task
@@ -196,8 +196,11 @@ def _task(linkage, task) -> Task:
     raise InputError(f"a task is a Task or the name of one of {linkage.name!r}'s tasks, got {type(task).__name__}")
 
 
-def run(linkage, task, *, ramp=RAMP, keep_poses: bool = True) -> TaskResult:
-    """Follow *task* (a :class:`Task` or the name of one of the linkage's tasks) sample by sample."""
+def run(linkage, task, *, ramp=RAMP, keep_poses: bool = True, positions=None) -> TaskResult:
+    """Follow *task* (a :class:`~gearlib.linkages.Task` or the name of one of the linkage's
+    tasks) sample by sample. The poses are solved from the motion inputs, or given by a
+    position function ``positions(t) -> {link: (R, p)}`` (or a :class:`~gearlib.linkages.Pose`),
+    checked against the joints."""
     task = _task(linkage, task)
     linkage.check_task(task)
     net = make_network(linkage)
@@ -220,7 +223,13 @@ def run(linkage, task, *, ramp=RAMP, keep_poses: bool = True) -> TaskResult:
             ratio = (t - times[i - 1]) / (times[i - 1] - times[i - 2])
             even = earlier is not None and abs((times[i - 1] - times[i - 2]) - (times[i - 2] - times[i - 3])) < 1e-12
             guess = extrapolate(pose, before, 1.0 if abs(ratio - 1) < 1e-9 else ratio, earlier if even else None)
-        pose, before, earlier = solve_pose(linkage, {k: v[0] for k, v in inputs.items()}, guess), pose, before
+        if positions is not None:
+            given = positions(t)
+            given = given if isinstance(given, Pose) else Pose.from_frames(linkage, given, {k: v[0] for k, v in
+                                                                                          inputs.items()})
+            pose, before, earlier = given, pose, before
+        else:
+            pose, before, earlier = solve_pose(linkage, {k: v[0] for k, v in inputs.items()}, guess), pose, before
         now = instant(linkage, pose, speeds={k: v[1] for k, v in inputs.items()}, actions=task.actions_at(t),
                       state=state, time=t, ramp=ramp)
         state = now.state

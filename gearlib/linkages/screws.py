@@ -7,7 +7,7 @@ motion is ``(s; p x s)``; a translation along ``s`` is ``(0; s)``; a force along
 ``p`` is ``(p x s; s)``; a couple about ``s`` is ``(s; 0)``.
 
 In the plane ``z = 0`` only ``{t; u, v}`` and ``{T; U, V}`` are ever non-zero: planar linkages
-keep those three coordinates (:data:`PLANAR`), the screws of order 3 of the thesis' slider-crank.
+keep those three coordinates (``PLANAR``), the screws of order 3 of the thesis' slider-crank.
 Chapter 5's gear trains, whose axes lie in the plane ``x = 0``, keep ``{s, t; u}`` instead
 (:mod:`gearlib.davies.screws`).
 

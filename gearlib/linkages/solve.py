@@ -1,4 +1,4 @@
-"""Davies' two laws at one instant, with Coulomb friction: :func:`instant`.
+"""Davies' two laws at one instant, with Coulomb friction: :func:`~gearlib.linkages.instant`.
 
 **Motions.** ``M_N psi = 0`` (Laus 2011, eq. 1), with the motion inputs as primary variables:
 a driven joint's rate, or the velocity of a load port's point (the thesis' ``u_M, v_M, w_M``).
@@ -299,6 +299,15 @@ class Instant:
         """``{column: power}`` of the ports and the friction columns."""
         p = self.column_powers()
         return {a.name: float(p[k]) for k, a in enumerate(self.network.action_cols) if a.role != "constraint"}
+
+    def coupling_powers(self) -> dict:
+        """``{coupling: power}``: what each coupling's ports and friction put in (negative: take
+        out or dissipate); a coupling with neither gives zero."""
+        p = self.column_powers()
+        out = {c.name: 0.0 for c in self.network.couplings}
+        for k, a in enumerate(self.network.action_cols):
+            out[a.coupling] += float(p[k])
+        return out
 
     def port_powers(self) -> dict:
         """``{port: power}``: positive when power enters the linkage there."""

@@ -6,7 +6,7 @@ known at the ports (the payload, the input torque), and the sampling of ``[start
 ``steps`` intervals, integrated by the ``rule`` named (``trapezoid``, ``simpson``, ``left``,
 ``right``, or ``gauss``: ``steps`` panels of four Gauss-Legendre nodes, which never fall on a
 panel's ends). Expressions are text (``"0.5 + 0.4*t"``, ``"0.2*cos(2*pi*t)"``); their
-derivatives give the speeds exactly. Samples read from a file (:meth:`Task.from_samples`)
+derivatives give the speeds exactly. Samples read from a file (:meth:`~gearlib.linkages.Task.from_samples`)
 get their speeds by finite differences.
 
 >>> from gearlib.linkages.tasks import Task
