@@ -449,3 +449,44 @@ def test_drawings_return_their_axes(robot):
     res = L.run(L.load("laus_slider_crank"), "crank_drives")
     assert res.plot(ax=axes[2]) is axes[2]
     plt.close(fig)
+
+
+# ----------------------------------------------------------------------------- a spatial slider-crank
+def rusp(mu=0.0):
+    """A spatial slider-crank R-U-S-P: a crank of 1 turning about z at the origin, a rod of 3
+    from the crank pin (universal joint) to a ball joint on a slider that runs along x on a line
+    0.5 above the crank's plane (z = 0.5) and 0.4 to the side (y = 0.4)."""
+    c = np.array([1.0, 0.0, 0.0])
+    s = np.array([1.0 + math.sqrt(9 - 0.4 ** 2 - 0.5 ** 2), 0.4, 0.5])
+    rod = (s - c) / np.linalg.norm(s - c)
+    a1 = np.cross(rod, [0.0, 0.0, 1.0])
+    a1 /= np.linalg.norm(a1)
+    a2 = np.cross(rod, a1)
+    return L.Linkage.from_dict({
+        "space": "spatial", "links": [0, 1, 2, 3], "ground": 0,
+        "joints": [{"name": "A", "kind": "revolute", "links": [0, 1], "point": [0, 0, 0], "axis": [0, 0, 1]},
+                   {"name": "B", "kind": "universal", "links": [1, 2], "point": c.tolist(),
+                    "axes": [a1.tolist(), a2.tolist()]},
+                   {"name": "C", "kind": "spherical", "links": [2, 3], "point": s.tolist()},
+                   {"name": "D", "kind": "prismatic", "links": [0, 3], "point": s.tolist(), "axis": [1, 0, 0],
+                    "friction": {"mu": mu}}],
+        "ports": [{"name": "A", "joint": "A", "role": "input"}, {"name": "D", "joint": "D", "role": "output"}]})
+
+
+def test_a_spatial_slider_crank_moves_and_balances_as_its_geometry_says():
+    linkage = rusp()
+    assert linkage.dof == 1
+    for theta in (0.4, 2.0, -1.1):
+        pose = L.solve_pose(linkage, {"A": [theta]})
+        now = L.instant(linkage, pose, speeds={"A": [1.0]}, actions={"A": 1.0})
+
+        def slide(t):   # the slider's x from the rod's length: |S - B| = 3
+            bx, by = math.cos(t), math.sin(t)
+            return bx + math.sqrt(9 - (0.4 - by) ** 2 - 0.25)
+
+        v = (slide(theta + 1e-6) - slide(theta - 1e-6)) / 2e-6
+        assert now.motion("q_D") == pytest.approx(v, rel=1e-7)
+        assert now.port_powers()["A"] == pytest.approx(-now.port_powers()["D"], rel=1e-9)   # no friction
+    lossy = L.cycle(rusp(0.2), "A", {"A": 1.0})
+    assert 0.9 < lossy.efficiency < 1.0
+    assert lossy.energy_in - lossy.energy_out == pytest.approx(sum(lossy.losses().values()), rel=1e-9)
