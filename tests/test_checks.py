@@ -11,6 +11,7 @@ them on deliberately broken checks to show that each one fails when it should.
 from __future__ import annotations
 
 import json
+import math
 import os
 import re
 import subprocess
@@ -42,6 +43,37 @@ def _stepped_model():
             "turning_pairs": [[10, 40, "z"], [10, 30, "p"], [10, 20, "z"]],
             "gear_pairs": [{"gears": [30, 20], "teeth": [15, 69], "type": "internal"},
                            {"gears": [40, 30], "teeth": [18, 36]}]}
+
+
+def _offset_crank(e, mu=0.1, a2=3.0):
+    """The slider-crank of exercise 7.4 as data: crank 1, coupler a2, slide at height e."""
+    cx = 1.0 + math.sqrt(a2 ** 2 - e ** 2)
+    return {"space": "planar", "links": {10: "frame", 11: "crank", 12: "coupler", 13: "slider"}, "ground": 10,
+            "joints": [{"name": "A", "kind": "revolute", "links": [10, 11], "point": [0, 0]},
+                       {"name": "B", "kind": "revolute", "links": [11, 12], "point": [1, 0]},
+                       {"name": "C", "kind": "revolute", "links": [12, 13], "point": [cx, e]},
+                       {"name": "D", "kind": "prismatic", "links": [13, 10], "point": [cx, e], "axis": [-1, 0],
+                        "friction": {"mu": mu}}],
+            "ports": [{"name": "torque", "joint": "A", "role": "input"}, {"name": "load", "joint": "D",
+                                                                          "role": "output"}]}
+
+
+def _t_b(a1, a2, deg):
+    th = math.radians(deg)
+    bx = a1 * math.cos(th)
+    cx = bx + math.sqrt(a2 ** 2 - (a1 * math.sin(th)) ** 2)
+    return cx / (bx - cx)
+
+
+def _limb1_force(mx, my, mz):
+    import numpy as np
+
+    rows = []
+    for k in range(3):
+        al = 2 * math.pi * k / 3
+        v = np.array([mx - 0.5 * math.cos(al), my - 0.5 * math.sin(al), mz])
+        rows.append(v / np.linalg.norm(v))
+    return float(np.linalg.solve(np.array(rows).T, [0.0, 0.0, 10_000.0])[0])
 
 
 def _stepped_wrong(change):
@@ -389,6 +421,34 @@ ANSWERS = {
                          "e_1_4*e_2_7*e_6_8*omega_6")]),
     # link 3 turns on link 2 (axis d); it lies in one circuit, so it must be a terminal (N3)
     "synth_left_out": ({"link": 3, "terminals": [4, 1, 3]}, [(7, [1, 4, 7]), (3, [3, 4, 8]), (6, [1, 3, 4])]),
+    # ---------------------------------------------------------------- 7 Davies beyond gear trains
+    # eq. (120): 1 - (0.25/pi) ln(130/50) = 1 - 0.0795775 * 0.955511
+    "linkage_crank_efficiency": (1 - 0.25 / math.pi * math.log(130 / 50),
+                                 [math.pi / (math.pi + 0.25 * math.log(130 / 50)), 1 - 0.25 * math.log(130 / 50),
+                                  1 - 0.25 / math.pi * math.log(90 / 40)]),
+    # eq. (123): pi / (pi + 0.25 ln(130/50))
+    "linkage_slider_efficiency": (math.pi / (math.pi + 0.25 * math.log(130 / 50)),
+                                  [1 - 0.25 / math.pi * math.log(130 / 50), 1 / (1 + 0.25 * math.log(130 / 50)),
+                                   0.5]),
+    # C_x = a1 cos + sqrt(a2^2 - (a1 sin - h)^2), differentiated
+    "linkage_offset_speed": ("-a1*sin(theta) - a1*cos(theta)*(a1*sin(theta) - h)/sqrt(a2**2 - (a1*sin(theta) - h)**2)",
+                             ["-a1*sin(theta) - a1**2*sin(theta)*cos(theta)/sqrt(a2**2 - a1**2*sin(theta)**2)",
+                              "-a1*sin(theta) - a1*cos(theta)*(a1*sin(theta) + h)/sqrt(a2**2 - (a1*sin(theta) + h)**2)",
+                              "-a1*sin(theta)"]),
+    "linkage_model_offset": (_offset_crank(0.5), [_offset_crank(0.0), _offset_crank(0.5, mu=0.0),
+                                                  _offset_crank(0.5, mu=0.2), _offset_crank(0.5, a2=2.5)]),
+    # stroke 2 a1 = 0.1; efficiency 1 - (0.15/pi) ln(0.55/0.45) = 0.99042 >= 0.985; 0.5 <= 0.6
+    "linkage_design_crank": ({"a1": 0.05, "a2": 0.5},
+                             [{"a1": 0.1, "a2": 0.5}, {"a1": 0.05, "a2": 0.3}, {"a1": 0.05, "a2": 0.7}]),
+    "linkage_concept_place": ("A", ["B", "C"]),
+    "linkage_concept_annuli": ("A", ["C", "B"]),
+    "linkage_concept_torques": ("A", ["B", "C"]),
+    # theta = 70 deg: B_x = 2 cos 70 = 0.684040, C_x = B_x + sqrt(25 - 4 sin^2 70) = 5.317388; t_B = C_x/(B_x - C_x)
+    "linkage_mistake_motion": (_t_b(2, 5, 70), [-_t_b(2, 5, 70), 1 / _t_b(2, 5, 70), 0.147634]),
+    "linkage_predict_pins": (None, [0.7393, 0.5, 1.2]),       # run in test_worse_pins_by_another_route
+    # virtual work: J^T f = (0, 0, 10000) with the limbs' unit vectors at M = (0, 0.25, 0.8)
+    "linkage_virtual_work": (_limb1_force(0.0, 0.25, 0.8), [-_limb1_force(0.0, 0.25, 0.8), 10_000 / 3, 2000.0]),
+    "linkage_explore_limb": (None, ["1", "3"]),                # found in test_the_lossiest_limb_by_another_route
 }
 
 
@@ -728,6 +788,47 @@ def test_each_broken_design_condition_is_named(checks):
                               "no redundant link": {"ground": 2, "terminals": [1, 4, 5]}}.items():
         result = gl.check.synth_design_dgm(design)
         assert not result.passed and result.details["broken"][0] == condition, (condition, result.message)
+
+
+def test_worse_pins_by_another_route(checks):
+    """7.9: the half lift's efficiency with the pins at 0.22, from the actuators' forces and the
+    limbs' lengthening rates of the test's own kinematics (J dM/dt), integrated here."""
+    import numpy as np
+
+    robot = gl.linkages.load("laus_3upu", parameters={"mu_pin": 0.22})
+    res = gl.linkages.run(robot, "lift_half")
+    power = np.zeros(len(res.times))
+    for i, t in enumerate(res.times):
+        m = np.array([0.1, 0.2, 0.5 + 0.4 * t])
+        for port, k in (("BC", 0), ("FG", 1), ("JK", 2)):
+            al = 2 * math.pi * k / 3
+            v = m - 0.5 * np.array([math.cos(al), math.sin(al), 0.0])
+            power[i] += res.port_series(port)[i] * (v / np.linalg.norm(v)) @ np.array([0.0, 0.0, 0.4])
+    energy = float(np.sum((power[1:] + power[:-1]) / 2 * np.diff(res.times)))
+    eta = 10_000 * 0.2 / energy
+    assert gl.check.linkage_predict_pins(eta).passed
+    assert 0.7 < eta < gl.linkages.run(gl.linkages.load("laus_3upu"), "lift_half").efficiency
+
+
+def test_the_lossiest_limb_by_another_route(checks):
+    """7.11: each limb's annuli dissipate mu (|Q_1| + |Q_2|) |q| (eq. 129); integrated here from
+    the lift's forces and the limbs' lengthening rates of the test's own kinematics."""
+    import numpy as np
+
+    res = gl.linkages.run(gl.linkages.load("laus_3upu"), "lift")
+    losses = []
+    for k, (b, c) in enumerate((("B", "C"), ("F", "G"), ("J", "K"))):
+        al = 2 * math.pi * k / 3
+        rate = []
+        for t in res.times:
+            v = np.array([0.1, 0.2, 0.5 + 0.4 * t]) - 0.5 * np.array([math.cos(al), math.sin(al), 0.0])
+            rate.append(abs((v / np.linalg.norm(v))[2] * 0.4))
+        normal = sum(abs(res.series(f"Q_{x}{i}")) for x in (b, c) for i in (1, 2))
+        p = 0.11 * normal * np.array(rate)
+        losses.append(float(np.sum((p[1:] + p[:-1]) / 2 * np.diff(res.times))))
+    best = str(1 + int(np.argmax(losses)))
+    assert gl.check.linkage_explore_limb(best).passed
+    assert sum(losses) == pytest.approx(sum(v for k, v in res.losses().items() if k.startswith("Q_")), rel=1e-6)
 
 
 # ----------------------------------------------------------------------------- tolerance and forms
