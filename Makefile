@@ -55,6 +55,11 @@ $(STAMP): environment.txt pyproject.toml
 
 venv: $(STAMP)
 
+# Every kernel of .venv reads this (figures as retina PNG); see book/ipython_kernel_config.py
+KERNEL_CONFIG := $(VENV)/etc/ipython/ipython_kernel_config.py
+$(KERNEL_CONFIG): book/ipython_kernel_config.py $(STAMP)
+	mkdir -p $(dir $@) && cp $< $@
+
 $(VENDOR_STAMP): $(VENDOR)/package.json $(VENDOR)/package-lock.json
 	@if ! command -v npm >/dev/null && [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
 		echo "installing Debian's npm to install the book's JavaScript"; \
@@ -85,7 +90,7 @@ unit: $(STAMP)
 	MPLBACKEND=Agg $(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 -m "not book and not browser and not pdf" \
 		--ignore=tests/test_browser.py --ignore=tests/test_lab.py
 
-notebooks: $(STAMP)
+notebooks: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/python -m pytest -q -p no:cacheprovider --nbval-lax --nbval-sanitize-with tests/nbval_sanitize.cfg \
 		--nbval-cell-timeout=300 -n 2 --dist loadfile $(wildcard $(NOTEBOOKS))
 
@@ -95,7 +100,7 @@ notebooks: $(STAMP)
 # parallel, one worker per CPU (JB_JOBS=1 for a serial build).
 # A clean build removes everything in book/_build but the screenshots, which the JupyterLab
 # test may be writing meanwhile (make test).
-build-book: $(STAMP) $(VENDOR_STAMP)
+build-book: $(STAMP) $(KERNEL_CONFIG) $(VENDOR_STAMP)
 	mkdir -p book/_build && find book/_build -mindepth 1 -maxdepth 1 ! -name screenshots -exec rm -rf {} +
 	$(BIN)/python book/build.py . $(JB_FLAGS)
 	@test -f book/_build/html/index.html
@@ -164,7 +169,7 @@ browser-pages: $(STAMP) chromium
 	@test -f book/_build/html/index.html || { echo "no built book: run make book first"; exit 1; }
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_browser.py
 
-browser-lab: $(STAMP) chromium
+browser-lab: $(STAMP) $(KERNEL_CONFIG) chromium
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_lab.py
 
 # after the build: its pages in Chromium, and the PDF from the same environment (side by side)
@@ -182,14 +187,14 @@ test: lint
 	$(MAKE) --no-print-directory -j3 -O unit browser-lab book-then-pages
 
 # JupyterLab (root must say so) at the book's start, with ipywidgets' extension for live widgets
-lab: $(STAMP)
+lab: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/jupyter lab $(if $(filter 0,$(shell id -u)),--allow-root) chapters/00_introduction.ipynb
 
-bench: $(STAMP)
+bench: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/python benchmarks/run.py
 
 # Determinism: every notebook three times in fresh kernels; outputs nbval compares must not change.
-nbval-repeat: $(STAMP)
+nbval-repeat: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/python tests/notebook_tools.py repeat 3 $(wildcard $(NOTEBOOKS))
 
 strip: $(STAMP)
