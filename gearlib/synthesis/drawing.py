@@ -3,7 +3,7 @@
 :func:`~gearlib.plot_dgm` draws a chain with its ground (grey square), terminals (black squares)
 and redundant links (orange) and writes the constraint under it; :func:`~gearlib.plot_identification`
 charts every assignment of a chain at once, the static twin of
-:func:`gearlib.dgm_explorer`. :func:`chain_layout` places a chain's links so that its edges
+:func:`gearlib.dgm_explorer`. :func:`gearlib.synthesis.chain_layout` places a chain's links so that its edges
 cross as little as the graph allows (none for a planar chain).
 """
 
@@ -56,7 +56,7 @@ def plot_dgm(constraint: TerminalConstraint, ax=None, *, pos=None, title=None, e
              width: int = 60, fontsize: float = 8):
     """Draw the chain of *constraint* as a DGM: ground, terminals, redundant links, and the
     constraint equation below (wrapped at *width* characters, in *fontsize* points). The links
-    are placed by *pos* (default :func:`chain_layout`).
+    are placed by *pos* (default :func:`gearlib.synthesis.chain_layout`).
 
     >>> c = gl.synthesis.terminal_constraint(gl.catalog.load("cyl_gkc_5_7_2"), (5, 6, 7), ground=4)
     >>> ax = gl.plot_dgm(c)
