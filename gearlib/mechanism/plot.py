@@ -15,6 +15,7 @@ import functools
 import math
 import textwrap
 import numpy as np
+from .._common.matview import polar_text
 from .graph import to_networkx
 from .data import Mechanism
 
@@ -163,7 +164,7 @@ def plot_speeds(solution, ax=None, *, links=None, title=None):
     ax.axhline(0, color="black", linewidth=0.8)
     ax.set_ylabel("|ω|" if is_complex else "ω")
     for bar, z, h in zip(bars, values, heights):
-        text = f"{h:.3g}" if not is_complex else f"{abs(z):.3g}\n∠{np.angle(z):.2f}"
+        text = f"{h:.3g}" if not is_complex else polar_text(z, 3).replace("∠", "\n∠")
         ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
                     va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
                     textcoords="offset points")
