@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import sympy
 
-__all__ = ["MatrixView", "format_entry", "polar_text", "polar_latex", "PAD"]
+__all__ = ["MatrixView", "format_entry", "polar_text", "polar_latex", "exp_text", "PAD"]
 
 PAD = "padding: 0.15em 0.7em"
 """The cell padding of gearlib's HTML tables: entries never run into each other."""
@@ -81,6 +81,19 @@ def polar_text(z, digits: int = 4) -> str:
     return _number(z.real, digits) if parts is None else f"{parts[0]}∠{parts[1]}°"
 
 
+def exp_text(z, digits: int = 4) -> str:
+    """A complex number in Penaud and Alazard's exponential form ``r e^(phi i)``, the angle in
+    radians (to compare with the paper's printed values); a real one as a plain number.
+
+    >>> exp_text(0.5 - 0.7j)
+    '0.8602 e^(-0.9505i)'
+    """
+    z = complex(z)
+    if abs(z) <= 1e-12 * max(1.0, abs(z)) or abs(z.imag) <= 1e-12 * max(1.0, abs(z)):
+        return polar_text(z, digits)
+    return f"{_number(abs(z), digits)} e^({_number(cmath.phase(z), digits)}i)"
+
+
 def polar_latex(z, digits: int = 4) -> str:
     """The LaTeX of :func:`polar_text`: ``r\\angle phi^\\circ``.
 
@@ -104,6 +117,8 @@ def format_entry(value, *, style: str = "exact", digits: int = 4) -> str:
     '-15e^(iπ/4) - 10e^(-iπ/12)'
     >>> format_entry(0.5 + 0.7j, style="polar")
     '0.8602∠54.46°'
+    >>> format_entry(0.5 + 0.7j, style="exp")           # the paper's form, radians
+    '0.8602 e^(0.9505i)'
     """
     if isinstance(value, str):
         return value
@@ -122,6 +137,8 @@ def format_entry(value, *, style: str = "exact", digits: int = 4) -> str:
                 parts.append((sign if k or c < 0 else "") + body)
             return " ".join(parts).replace("+", "+ ").replace(" -", " - ").lstrip() if len(parts) > 1 else parts[0]
         value = complex(sympy.N(value, 20))
+    if style == "exp":
+        return exp_text(complex(value), digits)
     return polar_text(complex(value), digits)
 
 
