@@ -52,7 +52,8 @@ def draw_coupling_graph(net, ax=None, *, pos=None, font_size=10, node_size=420):
             s = 0.05 * norm
             ax.plot([cx - nx_ * s, cx + nx_ * s], [cy - ny_ * s, cy + ny_ * s], color=color, lw=2.2, zorder=2)
         label = c.name + (" (in)" if c.role == "input" else " (out)" if c.role == "output" else "")
-        ax.text(cx + nx_ * 0.09 * norm, cy + ny_ * 0.09 * norm, label, fontsize=font_size - 1, ha="center",
+        away = 0.15 if c.kind == "mesh" else 0.09  # clear of the stroke across a mesh
+        ax.text(cx + nx_ * away * norm, cy + ny_ * away * norm, label, fontsize=font_size - 1, ha="center",
                 va="center", color=color, zorder=3)
     for link in mech.link_ids:
         x, y = pos[link]
