@@ -248,3 +248,15 @@ def test_efficiencies_named_by_gears():
     names = {s.name for row in formulas for s in gl.davies.by_gears(row.formula, {(2, 3): (2, 4)}).free_symbols
              if s.name.startswith("eta")}
     assert names <= {"eta_1_3", "eta_3_1", "eta_42", "eta_24"} and {"eta_42", "eta_24"} <= names
+
+
+def test_a_ring_declared_external_is_named_as_the_likely_mistake():
+    """A planetary whose ring lacks `type: internal` does not close its loop of centre
+    distances (an external 18/60 pair needs its axes 39 apart, the sun puts them 21 apart):
+    the note says what to check, not only that the efficiency is unaffected."""
+    m = gl.Mechanism.from_dict({
+        "links": {1: "sun", 2: "planet", 3: "ring", 4: "carrier"},
+        "turning_pairs": [[3, 1, "a"], [3, 4, "a"], [4, 2, "b"]],
+        "gear_pairs": [{"gears": [1, 2], "teeth": [24, 18]}, {"gears": [2, 3], "teeth": [18, 60]}]})
+    res = gl.davies.efficiency(m, 3, 1, 4, eta=0.98)
+    assert any("type: internal" in n and "do not close a loop" in n for n in res.notes)

@@ -6,10 +6,10 @@ The table ``T`` of links and joints has ``T(i, j) = "p"`` for a turning pair and
 ``M[l, k] = -T(i, j) - T(j, i)``: the Willis equation with a complex ratio
 ``e_{i,j} = -T(i,j)/T(j,i)``. Every speed vector lies in ``Ker M``.
 
-Two traps (chapter 4 and the book's Notes on the sources): ``Ker M`` always contains ``[1, ..., 1]`` (the whole
-mechanism turning as one body), so with one link grounded the degrees of freedom are
-``N - rank(M) - 1``; and a null-space basis is not unique, so compare normalised speed
-ratios (or subspaces, :func:`same_subspace`), never raw basis columns. Derived in chapter 4.
+Two traps (chapter 4 and the book's :ref:`notes on the sources <sources-pa>`): ``Ker M``
+always contains ``[1, ..., 1]`` (the whole mechanism turning as one body), so with one link
+grounded the degrees of freedom are ``N - rank(M) - 1``; and a null-space basis is not
+unique, so compare normalised speed ratios (or subspaces, :func:`same_subspace`), never raw basis columns. Derived in chapter 4.
 
 >>> import gearlib as gl
 >>> diff = gl.catalog.car_differential()
