@@ -18,8 +18,9 @@ import sympy
 
 __all__ = ["MatrixView", "format_entry", "polar_text", "polar_latex", "exp_text", "PAD"]
 
-PAD = "padding: 0.15em 0.7em"
+PAD = "padding: 0.15em 0.45em"
 """The cell padding of gearlib's HTML tables: entries never run into each other."""
+NOWRAP = "; white-space: nowrap"  # a short row label such as "(2, 7)/1" stays on one line
 
 
 def _exponent(theta) -> str:
@@ -170,7 +171,7 @@ class MatrixView:
 
         head = "".join(f"<th style='{PAD}'>{html.escape(c)}</th>" for c in self.cols)
         body = "".join(
-            f"<tr><th style='{PAD}; white-space: nowrap'>{html.escape(r)}</th>"
+            f"<tr><th style='{PAD}{NOWRAP if len(r) <= 16 else ''}'>{html.escape(r)}</th>"
             + "".join(f"<td style='{PAD}; text-align: center'>{cell(v)}</td>" for v in row)
             + "</tr>"
             for r, row in zip(self.rows, self.entries)

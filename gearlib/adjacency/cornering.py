@@ -152,7 +152,9 @@ class CorneringExplorer(Explorer):
         summary = f"{speed:g} km/h, {where}: left wheel {wl:.4g} rad/s, right wheel {wr:.4g} rad/s"
         # the key of the numbered lines is text beside the picture (HTML), not drawn into it
         key = "\n".join(spectrum_key(spectral_lines(table)))
-        self.text = f"{html.escape(summary)}<pre style='font-size: 11px; line-height: 1.2'>{html.escape(key)}</pre>"
+        # left-aligned: in the book the widget sits in a centred figure
+        style = "font-size: 11px; line-height: 1.2; text-align: left"
+        self.text = f"{html.escape(summary)}<pre style='{style}'>{html.escape(key)}</pre>"
         if self._canvas is None:
             from ..mechanism.widgets import Canvas
 
