@@ -135,5 +135,10 @@ def test_no_bare_glued_value_or_quoted_string_on_the_page(notebook):
              for call in _glue_calls("".join(c["source"])) if not re.search(r"display\s*=\s*False", call)]
     assert not shown, f"{notebook.stem}: glue calls that print their value bare: {shown}"
     main = _main(_soup(_chapter_page(notebook)))
-    quoted = [s.get_text() for s in main.select("span.pasted-text") if re.fullmatch(r"\s*'.*'\s*", s.get_text())]
+    # Sphinx's smart quotes turn the repr 'text' of a glued str into ‘text’ on the page:
+    # match straight and curly quotes alike
+    quote = "['\"\u2018\u2019\u201c\u201d]"
+    # a glue role renders as span.pasted-text ({glue:text}) or span.output.text_plain ({glue:})
+    quoted = [s.get_text() for s in main.select("span.pasted-text, span.output.text_plain")
+              if re.fullmatch(rf"\s*{quote}.*{quote}\s*", s.get_text())]
     assert not quoted, f"{notebook.stem}: glued strings shown with their quotes: {quoted}"

@@ -1,4 +1,5 @@
-"""Numbers for prose: exact fractions as fractions, floats rounded, complex in polar form.
+"""Numbers for prose: exact fractions as fractions, floats rounded, complex in polar form
+(``r∠phi°``, the angle in degrees, as every table of the book writes it).
 
 ``gl.number(value)`` wraps a value so that a notebook (and myst-nb's ``glue``) shows it
 as mathematics: ``2/7`` becomes :math:`\\tfrac{2}{7}`, ``0.9462068699`` becomes ``0.946207``.
@@ -11,15 +12,18 @@ as mathematics: ``2/7`` becomes :math:`\\tfrac{2}{7}`, ``0.9462068699`` becomes 
 '$0.946207$'
 >>> gl.number(-140.0)
 -140
+>>> gl.number(28.14 - 2.81j, 4)
+28.28∠-5.703°
 """
 
 from __future__ import annotations
 
-import cmath
 import re
 from fractions import Fraction
 
 import sympy
+
+from .._common.matview import polar_latex, polar_text
 
 __all__ = ["Number", "number", "Formula", "formula"]
 
@@ -44,8 +48,7 @@ class Number:
         if abs(z.imag) <= 1e-12 * max(1.0, abs(z)):
             text = f"{z.real:.{d}g}"
             return text, text.replace("e-", r"\times 10^{-").replace("e+", r"\times 10^{") + ("}" if "e" in text else "")
-        r, phi = abs(z), cmath.phase(z)
-        return f"{r:.{d}g}∠{phi:.{d}g}", rf"{r:.{d}g}\,e^{{{phi:.{d}g}\,i}}"
+        return polar_text(z, d), polar_latex(z, d)
 
     def __repr__(self) -> str:
         return self._parts()[0]

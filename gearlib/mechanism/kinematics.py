@@ -45,6 +45,7 @@ import numpy as np
 import sympy
 
 from .._common import linalg as _linalg
+from .._common.matview import polar_text
 from .._common.parse import parse_expr, to_fraction
 from .equations import omega
 from ..errors import ConstraintError, DataFormatError, InputError
@@ -302,7 +303,8 @@ class Solution:
 
 
 def format_value(v, digits: int = 6) -> str:
-    """A speed or ratio as short text: fractions exactly, floats rounded, complex in polar form."""
+    """A speed or ratio as short text: fractions exactly, floats rounded, complex in polar form
+    ``r∠phi°`` (the angle in degrees)."""
     if isinstance(v, Fraction):
         return str(v)
     if isinstance(v, sympy.Basic):
@@ -314,7 +316,7 @@ def format_value(v, digits: int = 6) -> str:
     z = complex(v)
     if abs(z.imag) <= 1e-12 * max(1.0, abs(z)):
         return f"{z.real:.{digits}g}"
-    return f"{abs(z):.{digits}g}∠{np.angle(z):.{digits}g}"
+    return polar_text(z, digits)
 
 
 def _to_complex(v) -> complex:

@@ -10,14 +10,18 @@ square, input links as black squares, other links as circles.
 """
 
 from __future__ import annotations
+
 import contextlib
 import functools
 import math
-import numpy as np
-from .graph import to_networkx
-from .data import Mechanism
 
-__all__ = ['style', 'graph_layout', 'draw_graph', 'plot_speeds', 'plot_ratio_sweep']
+import numpy as np
+
+from .._common.matview import polar_text
+from .data import Mechanism
+from .graph import to_networkx
+
+__all__ = ["style", "graph_layout", "draw_graph", "plot_speeds", "plot_ratio_sweep"]
 
 
 _STYLE = {
@@ -195,12 +199,12 @@ def plot_speeds(solution, ax=None, *, links=None, title=None, unit="rad/s"):
     ax.axhline(0, color="black", linewidth=0.8)
     ax.set_ylabel(f"angular velocity ({unit})" if unit else "angular velocity")
     if any(not _is_real(z) for z in values):
-        ax.set_xlabel("r∠φ: magnitude r, angle φ in rad", fontsize=8)
+        ax.set_xlabel("r∠φ: magnitude r, angle φ in degrees", fontsize=8)
     angled = False
     for bar, z, h in zip(bars, values, heights):
         text = f"{h:.3g}"
         if not _is_real(z):
-            text, angled = f"{abs(z):.3g}\n∠{np.angle(z):.2f}", True
+            text, angled = polar_text(z, 3).replace("∠", "\n∠"), True
         ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
                     va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
                     textcoords="offset points")
