@@ -18,8 +18,9 @@ decimal is right when it is within half a unit of its last digit.
 Each check is numbered and described (``exercise``, ``title``, ``stars``, ``minutes``,
 ``kind``), can draw other numbers for a student (``check(answer, variant="s1234")``,
 ``check.given(variant)``, ``check.statement(variant)``), and returns a
-:class:`CheckResult` a grader can score. Chapters register their checks in their own
-module here (``gearlib/check/<subpackage>.py``) with :func:`register` and a spec
+:class:`CheckResult` a grader can score; :func:`grade` is a course autograder's test
+cell, and :func:`student` the variant a course notebook uses. Chapters register their checks
+in their own module here (``gearlib/check/<subpackage>.py``) with :func:`register` and a spec
 (:class:`Value`, :class:`Symbolic`, :class:`Choice`, ...); every module of this package whose
 name does not start with ``_`` is imported on first use.
 """
@@ -32,6 +33,7 @@ import pkgutil
 from ._choice import Choice, Groups, LinkId, LinkSet, Parts
 from ._core import KINDS, REGISTRY, Check, Prediction, register, register_custom
 from ._design import Condition, Design, Matrix
+from ._grade import VARIANT_VARIABLE, grade, student
 from ._model import Model, Scenario
 from ._read import Unreadable
 from ._result import CheckResult
@@ -41,7 +43,7 @@ from ._value import QUANTITIES, Hint, Mistake, Symbolic, Value
 __all__ = ["names", "get", "catalogue", "register", "register_custom", "Check", "CheckResult", "KINDS",
            "QUANTITIES", "Value", "Symbolic", "Mistake", "Hint", "Choice", "LinkId", "LinkSet", "Groups",
            "Parts", "Model", "Scenario", "Design", "Condition", "Matrix", "Prediction", "Spec", "Verdict",
-           "Unreadable"]
+           "Unreadable", "student", "grade", "VARIANT_VARIABLE"]
 
 _loaded = False
 
