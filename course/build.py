@@ -90,8 +90,8 @@ def build_notebooks(out: pathlib.Path, classlist: pathlib.Path, hub: str, repo: 
             print(f"note: {page.path.name}: exercises {', '.join(unchecked)} have no check and are not graded")
 
     _nbgrader(course, "db", "student", "import", "students.csv")
-    for a in assignments:
-        _nbgrader(course, "generate_assignment", a["assignment"], "--force")
+    if assignments:
+        _nbgrader(course, "generate_assignment", "*", "--force")
 
     shutil.rmtree(out / "students", ignore_errors=True)
     for a in assignments:
