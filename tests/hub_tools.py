@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import os
 import socket
+import struct
 import time
 import uuid
 from urllib.parse import urlsplit
@@ -122,6 +123,17 @@ class Student:
         return errors, outputs
 
 
+def _message(frame) -> dict:
+    """A kernel message from the server's websocket: text, or binary when it carries buffers
+    (a widget's state): the number of parts, their offsets, then the JSON message first."""
+    if isinstance(frame, str):
+        return json.loads(frame)
+    parts = struct.unpack_from("!I", frame)[0]
+    offsets = struct.unpack_from(f"!{parts}I", frame, 4)
+    end = offsets[1] if parts > 1 else len(frame)
+    return json.loads(frame[offsets[0]:end].decode("utf-8"))
+
+
 def _execute(ws, code: str, timeout: float):
     msg_id = uuid.uuid4().hex
     ws.send(json.dumps({
@@ -134,7 +146,7 @@ def _execute(ws, code: str, timeout: float):
     end = time.monotonic() + timeout
     while status is None or not idle:
         assert time.monotonic() < end, "a cell did not finish"
-        msg = json.loads(ws.recv())
+        msg = _message(ws.recv())
         if msg.get("parent_header", {}).get("msg_id") != msg_id:
             continue
         kind, content = msg["msg_type"], msg["content"]
