@@ -100,8 +100,9 @@ def _regions(exercise: Exercise, answers: list[Call], setup: str) -> list[str]:
 def source_notebook(page: Page, checks: dict) -> dict:
     """The nbgrader source notebook of *page*; *checks*: name -> gearlib Check."""
     graded = [e for e in page.exercises if e.check in checks]
-    cells = [_cell("markdown", INTRO.format(chapter=int(page.chapter), points=sum(checks[e.check].points for e in graded),
-                                            minutes=sum(e.minutes for e in page.exercises)), INTRO_CELL)]
+    intro = INTRO.format(chapter=int(page.chapter), points=sum(checks[e.check].points for e in graded),
+                         minutes=sum(e.minutes for e in page.exercises))
+    cells = [_cell("markdown", intro, INTRO_CELL)]
     student = _cell("code", STUDENT_CODE.format(student="None"), STUDENT_CELL, {"gearlib": {"student": True}})
     placed = False
     for cell in page.preamble:

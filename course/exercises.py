@@ -51,10 +51,6 @@ class Exercise:
     check: str | None = None
     solution: str = ""                             # the solution's code (the check calls still in it)
 
-    @property
-    def chapter(self) -> str:
-        return f"{int(self.number.split('.')[0]):02d}"
-
 
 @dataclass
 class Page:

@@ -74,6 +74,8 @@ c.Spawner.notebook_dir = "~"
 c.Spawner.environment = {"JUPYTER_PREFER_ENV_PATH": "1"}  # kernels from this environment first
 c.Spawner.start_timeout = 120
 c.Spawner.http_timeout = 120
+# a student who follows a chapter's link while their server is stopped gets it started (after 2 s)
+c.JupyterHub.implicit_spawn_seconds = 2
 
 # --- the start page: the nbgitpuller link of chapter 0 (every chapter's is in links.md) ---------
 REPO = os.environ.get("COURSE_REPO") or _git("remote", "get-url", "origin") or ROOT.as_uri()

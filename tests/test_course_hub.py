@@ -85,9 +85,11 @@ def binder(tmp_path_factory, upstream):
     venv = tmp / "venv"
     started = time.monotonic()
     _run([sys.executable, "-m", "venv", str(venv)], timeout=300)
-    env = {**os.environ, "PIP_NO_INDEX": "1", "PIP_FIND_LINKS": str(house), "PIP_DISABLE_PIP_VERSION_CHECK": "1",
+    # only the wheels of binder/ (no index, none of this machine's pip configuration); no byte
+    # compilation, which Python does on first import anyway
+    env = {**{k: v for k, v in os.environ.items() if not k.startswith("PIP_")}, "PIP_CONFIG_FILE": os.devnull,
+           "PIP_NO_INDEX": "1", "PIP_FIND_LINKS": str(house), "PIP_DISABLE_PIP_VERSION_CHECK": "1",
            "PIP_NO_COMPILE": "1", "PATH": f"{venv / 'bin'}{os.pathsep}{os.environ['PATH']}"}
-    env.pop("PIP_CONSTRAINT", None)
     _run([str(venv / "bin" / "python"), "-m", "pip", "install", "--quiet", "-r",
           str(ROOT / "binder" / "requirements.txt")], env=env, timeout=900)
     clone = tmp / "repo"

@@ -4,7 +4,7 @@ A check answers a right answer with a short confirmation and a wrong one with a 
 diagnoses the usual mistakes of its kind of quantity; it never shows the answer (no
 attribute, method, repr or message of a check carries it), never raises, and returns in
 bounded time whatever it is given. Answers may be ints, floats, fractions, complex numbers,
-numpy or sympy values, or text (``"2/7"``, ``"−1.3846"``, ``"450 Hz"``, ``"89.6 %"``); a
+numpy or sympy values, or text (``"2/7"``, ``"−1.3846"``, ``"120 Hz"``, ``"89.6 %"``); a
 decimal is right when it is within half a unit of its last digit.
 
 >>> import gearlib as gl
