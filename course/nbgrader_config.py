@@ -20,6 +20,8 @@ import pathlib
 from nbgrader.converters import Autograde
 from nbgrader.preprocessors import Execute
 
+from gearlib.check import VARIANT_VARIABLE  # "GEARLIB_VARIANT"
+
 c = get_config()  # noqa: F821 (nbgrader's configuration loader provides it)
 
 c.CourseDirectory.course_id = "gearlib"
@@ -27,7 +29,6 @@ c.ClearSolutions.code_stub = {"python": ""}
 c.Execute.timeout = 300
 
 VARIANTS_FILE = pathlib.Path(__file__).with_name("variants.json")
-VARIANT_VARIABLE = "GEARLIB_VARIANT"
 
 
 class ExecuteAsStudent(Execute):

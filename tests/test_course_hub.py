@@ -89,9 +89,9 @@ def binder(tmp_path_factory, upstream):
     # compilation, which Python does on first import anyway
     env = {**{k: v for k, v in os.environ.items() if not k.startswith("PIP_")}, "PIP_CONFIG_FILE": os.devnull,
            "PIP_NO_INDEX": "1", "PIP_FIND_LINKS": str(house), "PIP_DISABLE_PIP_VERSION_CHECK": "1",
-           "PIP_NO_COMPILE": "1", "PATH": f"{venv / 'bin'}{os.pathsep}{os.environ['PATH']}"}
-    _run([str(venv / "bin" / "python"), "-m", "pip", "install", "--quiet", "-r",
-          str(ROOT / "binder" / "requirements.txt")], env=env, timeout=900)
+           "PATH": f"{venv / 'bin'}{os.pathsep}{os.environ['PATH']}"}
+    _run([str(venv / "bin" / "python"), "-m", "pip", "install", "--quiet", "--no-compile", "-r",
+          str(ROOT / "binder" / "requirements.txt")], env=env, timeout=1200)
     clone = tmp / "repo"
     _git("clone", "--quiet", str(upstream), str(clone), cwd=tmp)
     _run(["bash", "binder/postBuild"], cwd=clone, env=env, timeout=600)

@@ -33,7 +33,8 @@ import pkgutil
 from ._choice import Choice, Groups, LinkId, LinkSet, Parts
 from ._core import KINDS, REGISTRY, Check, Prediction, register, register_custom
 from ._design import Condition, Design, Matrix
-from ._grade import VARIANT_VARIABLE, grade, student
+from ._grade import VARIANT_VARIABLE, student
+from ._grade import score as _score
 from ._model import Model, Scenario
 from ._read import Unreadable
 from ._result import CheckResult
@@ -70,6 +71,21 @@ def get(name: str) -> Check:
         return REGISTRY[name]
     except KeyError:
         raise AttributeError(f"no exercise check {name!r}; see gl.check.names()") from None
+
+
+def grade(name: str, answer, variant=None) -> float:
+    """An autograder's test: check *answer* to exercise check *name* for *variant* (see
+    :func:`student`), print the verdict (the check's hint when the answer is wrong, never the
+    answer) and return the points it earns, between 0 and the exercise's points (its stars;
+    parts of an answer that are right count their share). nbgrader reads the returned number
+    as the cell's partial credit.
+
+    >>> import gearlib as gl
+    >>> gl.check.grade("intro_gear_ratio", None)
+    ✘ Not yet. No answer yet: replace `None` with your answer.
+    0.0
+    """
+    return _score(get(name), answer, variant)
 
 
 def _order(check: Check) -> tuple:

@@ -3,11 +3,12 @@ autograder's test cell gives.
 
 A course notebook (``make course``) starts with ``STUDENT = gl.check.student("s1234")``
 and checks each answer against that student's numbers. Its autograder test cells (nbgrader)
-call :func:`grade`, the same check that gives the reader's hint. While the course's grader
-runs a submission, the variable ``GEARLIB_VARIANT`` names the variant of the student who
-submitted it (the course's ``nbgrader_config.py`` sets it from the submission's student id);
-then :func:`student` and :func:`grade` use that variant, whatever id the notebook was given,
-so that a student who types another student's id is still graded against their own numbers.
+call :func:`~gearlib.check.grade`, the same check that gives the reader's hint. While the
+course's grader runs a submission, the variable ``GEARLIB_VARIANT`` names the variant of the
+student who submitted it (the course's ``nbgrader_config.py`` sets it from the submission's
+student id); then :func:`student` and :func:`~gearlib.check.grade` use that variant, whatever
+id the notebook was given, so that a student who types another student's id is still graded
+against their own numbers.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ import warnings
 from ._core import variant_key
 from ._read import Unreadable
 
-__all__ = ["student", "grade", "VARIANT_VARIABLE"]
+__all__ = ["student", "score", "VARIANT_VARIABLE"]
 
 VARIANT_VARIABLE = "GEARLIB_VARIANT"
 """The environment variable through which a course's autograder names the variant of the
@@ -42,21 +43,8 @@ def student(student_id=None) -> str | None:
     return variant_key(student_id)
 
 
-def grade(name: str, answer, variant=None) -> float:
-    """An autograder's test: check *answer* to exercise check *name* for *variant* (see
-    :func:`student`), print the verdict (the check's hint when the answer is wrong, never the
-    answer) and return the points it earns, between 0 and the exercise's points (its stars;
-    parts of an answer that are right count their share). nbgrader reads the returned number
-    as the cell's partial credit.
-
-    >>> import gearlib as gl
-    >>> gl.check.grade("intro_gear_ratio", None)
-    ✘ Not yet. No answer yet: replace `None` with your answer.
-    0.0
-    """
-    from . import get
-
-    check = get(name)
+def score(check, answer, variant=None) -> float:
+    """:func:`~gearlib.check.grade` for a :class:`~gearlib.check.Check` object."""
     try:
         variant = student(variant)
     except Unreadable as err:
