@@ -97,8 +97,10 @@ def _regions(exercise: Exercise, answers: list[Call], setup: str) -> list[str]:
     return regions
 
 
-def source_notebook(page: Page, checks: dict) -> dict:
-    """The nbgrader source notebook of *page*; *checks*: name -> gearlib Check."""
+def source_notebook(page: Page, checks: dict, notes: list | None = None) -> dict:
+    """The nbgrader source notebook of *page*; *checks*: name -> gearlib Check. An exercise
+    whose worked solution cannot be read raises :class:`CourseError`, or, given a *notes*
+    list, is noted there and left without a solution (its reference then earns nothing)."""
     graded = [e for e in page.exercises if e.check in checks]
     intro = INTRO.format(chapter=int(page.chapter), points=sum(checks[e.check].points for e in graded),
                          minutes=sum(e.minutes for e in page.exercises))
@@ -129,9 +131,16 @@ def source_notebook(page: Page, checks: dict) -> dict:
                         and any(call.name == exercise.check for call in check_calls(source(c)))]
         calls = [[c for c in check_calls(source(exercise.cells[i])) if c.name == exercise.check][0]
                  for i in answer_cells]
-        regions = _regions(exercise, calls, setup) if answer_cells else []
+        regions = []
         if answer_cells:
-            setup = ""
+            try:
+                regions = _regions(exercise, calls, setup)
+                setup = ""
+            except CourseError as err:
+                if notes is None:
+                    raise
+                notes.append(f"{page.path.name}: {err}; source/ has no worked solution for it")
+                regions = [""] * len(calls)
         for i, cell in enumerate(exercise.cells):
             if i not in answer_cells:
                 cells.append(_plain(cell))

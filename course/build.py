@@ -80,7 +80,10 @@ def build_notebooks(out: pathlib.Path, classlist: pathlib.Path, hub: str, repo: 
         if not graded:
             continue
         aid = page.name
-        _write_json(course / "source" / aid / f"{aid}.ipynb", source_notebook(page, checks))
+        notes = []
+        _write_json(course / "source" / aid / f"{aid}.ipynb", source_notebook(page, checks, notes))
+        for note in notes:
+            print(f"note: {note}")
         assignments.append({"assignment": aid, "chapter": int(page.chapter), "exercises": len(graded),
                             "points": sum(checks[e.check].points for e in graded),
                             "minutes": sum(e.minutes for e in page.exercises),

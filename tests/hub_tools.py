@@ -99,9 +99,9 @@ class Student:
                 assert time.monotonic() < end, "the pull did not finish"
         return events
 
-    def run_notebook(self, path: str, timeout: float = 600) -> tuple[list[str], list[list]]:
-        """Start a kernel for *path* (a session, as JupyterLab does), run its code cells in order;
-        ``(errors, outputs per code cell)``. The session is closed at the end."""
+    def run_notebook(self, path: str, then: str = "", timeout: float = 600) -> tuple[list[str], list[list]]:
+        """Start a kernel for *path* (a session, as JupyterLab does), run its code cells in order,
+        then the code *then*; ``(errors, outputs per code cell)``. The session is closed at the end."""
         nb = self.server("GET", f"api/contents/{path}").json()["content"]
         r = self.server("POST", "api/sessions", json={"path": path, "type": "notebook", "name": os.path.basename(path),
                                                        "kernel": {"name": "python3"}})
@@ -111,8 +111,9 @@ class Student:
         ws = websocket.create_connection(ws_url, header=[f"Authorization: token {self.token}"], timeout=timeout)
         errors, outputs = [], []
         try:
-            for i, cell in enumerate(c for c in nb["cells"] if c["cell_type"] == "code"):
-                status, out = _execute(ws, "".join(cell["source"]), timeout)
+            cells = ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"] + ([then] if then else [])
+            for i, code in enumerate(cells):
+                status, out = _execute(ws, code, timeout)
                 outputs.append(out)
                 errors += [f"code cell {i + 1}: {o['ename']}: {o['evalue']}" for o in out if o["type"] == "error"]
                 if status != "ok" and not errors:

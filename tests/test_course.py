@@ -13,6 +13,7 @@ The exercises are found as the kit finds them, so the tests grow with the book.
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import io
 import json
@@ -281,8 +282,10 @@ def graded(build):
             if c["cell_type"] == "code":
                 c["source"] = solved(text(c))
         save(submitted / "lecturer" / a / f"{a}.ipynb", source)
-        # (b) a student hands in their notebooks untouched
-        save(submitted / "s0004" / a / f"{a}.ipynb", load(_notebook(build, "students/s0004", a)))
+    # (b) a student hands in their notebook of the largest assignment untouched (that no
+    # answer cell of any assignment starts with more than None is checked without running it)
+    a = _largest_assignment(build)
+    save(submitted / "s0004" / a / f"{a}.ipynb", load(_notebook(build, "students/s0004", a)))
     # (c) a student with the book's numbers: the worked solutions, one answer wrong, one missing
     a = _assignments(build)[0]
     nb = load(_notebook(build, "nbgrader/source", a))
@@ -321,11 +324,34 @@ def test_the_worked_solutions_get_full_marks(build, graded):
         assert sum(s[1] for s in marks[("lecturer", a)].values()) > 0
 
 
+def _largest_assignment(build):
+    return max(_assignments(build), key=lambda a: len(_graded_cells(load(_notebook(build, "nbgrader/source", a)))))
+
+
 def test_untouched_notebooks_get_zero(build, graded):
     course, marks, _ = graded
-    for a in _assignments(build):
-        scores = marks[("s0004", a)]
-        assert scores and all(s[0] == 0 for s in scores.values()), f"{a}: {scores}"
+    a = _largest_assignment(build)
+    scores = marks[("s0004", a)]
+    assert len(scores) >= 10 and all(s[0] == 0 for s in scores.values()), f"{a}: {scores}"
+    assert [key for key in marks if key[0] == "s0004"] == [("s0004", a)]
+
+
+def test_every_answer_starts_as_none(build):
+    """In every notebook handed out, each answer cell gives its answer variable nothing but
+    None before the check (so that an untouched notebook earns nothing in any assignment)."""
+    for folder in ("nbgrader/release", "students/s0004"):
+        for a in _assignments(build):
+            for cells in _graded_cells(load(_notebook(build, folder, a))).values():
+                for c in cells:
+                    if c["metadata"]["nbgrader"].get("grade"):
+                        continue
+                    tree = ast.parse(text(c))
+                    stub = [n for n in tree.body if isinstance(n, ast.Assign)]
+                    call = [n for n in tree.body if "gl.check." in ast.unparse(n)]
+                    assert stub and call and tree.body.index(stub[-1]) < tree.body.index(call[0]), (a, c["id"])
+                    value = ast.literal_eval(stub[-1].value)
+                    values = value.values() if isinstance(value, dict) else [value]
+                    assert all(v is None for v in values), (a, c["id"], value)
 
 
 def test_some_wrong_answers_get_partial_marks_and_their_hints_as_feedback(build, graded):

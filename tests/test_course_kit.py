@@ -56,12 +56,17 @@ def test_a_predict_exercise_gets_its_guess_and_its_answer_from_the_solution():
                 assert f"gl.check.{name}.predict(" in c["source"].split("### END SOLUTION")[1]
 
 
-def test_an_exercise_whose_solution_never_checks_the_answer_is_refused(tmp_path):
+def test_an_exercise_whose_solution_never_checks_the_answer_is_refused_or_noted():
     checks = {n: gl.check.get(n) for n in gl.check.names()}
     page = pages()[0]
     page.exercises[0].solution = "x = 1"
     with pytest.raises(CourseError, match=r"exercise 0\.1: its solution does not call gl\.check\.\w+\(\.\.\.\)"):
         source_notebook(page, checks)
+    notes = []  # make course goes on, and says which exercise has no worked solution
+    nb = source_notebook(page, checks, notes)
+    assert len(notes) == 1 and "exercise 0.1" in notes[0]
+    answer = [c for c in nb["cells"] if c["id"] == f"{page.exercises[0].label}-answer"][0]
+    assert "### BEGIN SOLUTION\n\n### END SOLUTION" in answer["source"]
 
 
 def test_a_class_list_is_read_or_refused_with_the_row_at_fault(tmp_path):
