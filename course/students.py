@@ -57,6 +57,20 @@ def _escape(text: str) -> str:
     return re.sub(r"([\\`*_\[\]<>])", r"\\\1", text)
 
 
+def _choices(prose: str) -> str:
+    """The lettered options of an exercise's statement (``- **A.** ...`` and the lines that
+    continue them), which a student's statement, written from the check's question, keeps."""
+    kept, inside = [], False
+    for line in prose.splitlines():
+        if re.match(r"^[-*] \*\*[A-Z]\.\*\*", line):
+            inside = True
+        elif not line.startswith("  ") or not line.strip():
+            inside = False
+        if inside:
+            kept.append(line)
+    return "\n".join(kept)
+
+
 def student_copy(release: dict, student: Student, checks: dict) -> dict:
     """*release* (a released notebook) with *student*'s id, and the statement of every
     exercise whose numbers vary with the numbers drawn for them."""
@@ -76,9 +90,10 @@ def student_copy(release: dict, student: Student, checks: dict) -> dict:
         elif cell["cell_type"] == "markdown" and meta.get("check") in checks and student.variant is not None:
             check = checks[meta["check"]]
             if check.variants:
-                heading = source(cell).split("\n\n", 1)[0]
+                heading, _, prose = source(cell).partition("\n\n")
+                choices = _choices(prose)
                 cell["source"] = (f"{heading}\n\n**Your numbers** (student {_escape(student.id)}). "
-                                  f"{_escape(check.statement(student.variant))}")
+                                  f"{_escape(check.statement(student.variant))}" + (f"\n\n{choices}" if choices else ""))
     if not found:
         raise CourseError("a released notebook without its STUDENT cell: run make course again")
     return nb

@@ -138,11 +138,13 @@ def test_each_student_notebook_carries_its_own_numbers(build):
                     continue
                 statement = [c for c in nb["cells"] if c.get("id", "").endswith("-statement")
                              and c["metadata"]["gearlib"]["check"] == name][0]
+                book_statement = [c for c in book["cells"] if c.get("id") == statement["id"]][0]
                 if variant and check.variants:
                     assert check.statement(variant) in _unescape(text(statement)), (sid, name)
                     seen.setdefault(name, set()).add(text(statement).split("). ", 1)[1])
+                    for option in re.findall(r"^- \*\*[A-Z]\.\*\*.*$", text(book_statement), re.M):
+                        assert option in text(statement), f"{sid}, {name}: the option {option!r} is missing"
                 else:
-                    book_statement = [c for c in book["cells"] if c.get("id") == statement["id"]][0]
                     assert text(statement) == text(book_statement), (sid, name)
     assert seen and all(len(s) > 1 for s in seen.values()), "students share numbers"
 
