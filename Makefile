@@ -27,7 +27,7 @@ VENDOR_STAMP := $(VENDOR)/_static/.staged
 CHROMIUM ?= $(shell command -v chromium || command -v chromium-browser || true)
 
 .PHONY: help venv vendor lint unit notebooks book build-book tex pdf pdf-from-build browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean \
-	proxy course course-notebooks course-html course-test hub binder-constraints
+	proxy course course-notebooks course-html course-test course-then-html hub binder-constraints
 
 help:
 	@echo "make book     build the HTML book into book/_build/html (creates .venv if needed)"
@@ -177,20 +177,23 @@ browser-pages: $(STAMP) chromium
 browser-lab: $(STAMP) chromium
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_lab.py
 
-# after the build: its pages in Chromium, the PDF from the same environment and the course's
-# HTML book from the same executed notebooks (side by side)
+# after the build: its pages in Chromium, and the PDF from the same environment (side by side)
 book-then-pages: build-book
-	$(MAKE) --no-print-directory -j3 -O browser-pages pdf-from-build course-html
+	$(MAKE) --no-print-directory -j2 -O browser-pages pdf-from-build
 
 # The book build executes every notebook in a fresh kernel and fails on any error (as nbval
 # did here before; tests/test_repo.py checks that every notebook is in the book), so make
 # test does not run them twice; `make notebooks` runs them under nbval alone.
-# Three chains side by side on two cores, so that none leaves a core idle (kernel
+# Four chains side by side on two cores, so that none leaves a core idle (kernel
 # start-ups, Sphinx's serial steps, a browser waiting for a kernel): the unit tests, the
-# chapters in JupyterLab, and the book build followed by its pages in Chromium and the PDF.
-# -O prints each one's output whole when it ends.
+# chapters in JupyterLab, the book build followed by its pages in Chromium and the PDF, and
+# the course kit's tests followed, once the book is built (one build serves both chains),
+# by the course's HTML book. -O prints each one's output whole when it ends.
 test: lint
-	$(MAKE) --no-print-directory -j4 -O unit browser-lab book-then-pages course-test
+	$(MAKE) --no-print-directory -j4 -O unit browser-lab book-then-pages course-then-html
+
+course-then-html: course-test build-book
+	$(MAKE) --no-print-directory course-html
 
 # JupyterLab (root must say so) at the book's start, with ipywidgets' extension for live widgets
 lab: $(STAMP)
