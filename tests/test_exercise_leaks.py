@@ -106,7 +106,7 @@ def number_leaks(text: str, value) -> list[str]:
     if abs(z.imag) > 1e-12 * max(1.0, abs(z)) or not math.isfinite(z.real):
         return []  # complex answers are found as expressions
     x = z.real
-    exact = sympy.nsimplify(value) if isinstance(value, sympy.Rational) else None
+    exact = value if isinstance(value, sympy.Rational) else None  # (nsimplify turned 8460/13 into powers)
     found = []
     for v, digits, s in _numbers(text):
         if digits is None:

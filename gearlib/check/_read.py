@@ -7,7 +7,7 @@ number, so that ``9**9**9**9`` or ``"1e999999"`` get a message at once instead o
 Text may use ``I``, ``i`` or ``j`` for the imaginary unit (``2+3j``, ``2.5*exp(i*pi/3)``),
 the Unicode minus and multiplication signs of a rendered page (``−``, ``×``, ``·``), ``π``,
 Greek letters for names (``ω_4`` is ``omega_4``), ``e_{1,2}`` for ``e_1_2``, a percent sign
-and a unit suffix (``"450 Hz"``, ``"2827 rad/s"``, ``"3.2 orders"``, ``"89.6 %"``).
+and a unit suffix (``"120 Hz"``, ``"2827 rad/s"``, ``"3.2 orders"``, ``"89.6 %"``).
 
 A decimal number carries its precision: ``"0.2857"`` is 0.2857 give or take half a unit of
 its last digit, and so is the float ``0.2857`` (read by its shortest repr). The precision of
