@@ -114,7 +114,7 @@ build-book: $(STAMP) $(KERNEL_CONFIG) $(VENDOR_STAMP)
 	mkdir -p book/_build && find book/_build -mindepth 1 -maxdepth 1 ! -name screenshots -exec rm -rf {} +
 	$(BIN)/python book/build.py . $(JB_FLAGS)
 	@test -f book/_build/html/index.html
-	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py tests/test_exercise_leaks.py
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py tests/test_book_reading.py tests/test_exercise_leaks.py
 	@echo "The book is in book/_build/html/index.html"
 
 book: build-book
