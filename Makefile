@@ -16,8 +16,8 @@ STAMP := $(VENV)/.installed
 export JUPYTER_PREFER_ENV_PATH := 1
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 
-NOTEBOOKS := chapters exercises book/solutions
-LINTED := gearlib tests chapters exercises book benchmarks
+NOTEBOOKS := chapters exercises book/solutions book/lecturers.ipynb
+LINTED := gearlib tests chapters exercises book benchmarks course
 JB_FLAGS := --config book/_config.yml --toc book/_toc.yml --path-output book -W -n --keep-going
 # JavaScript the book ships so that it reads offline: pinned in book/vendor/package-lock.json,
 # installed by npm into book/vendor/node_modules (a cache, ignored by git) and staged in
@@ -26,7 +26,8 @@ VENDOR := book/vendor
 VENDOR_STAMP := $(VENDOR)/_static/.staged
 CHROMIUM ?= $(shell command -v chromium || command -v chromium-browser || true)
 
-.PHONY: help venv vendor lint unit notebooks book build-book tex pdf pdf-from-build browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean
+.PHONY: help venv vendor lint unit notebooks book build-book tex pdf pdf-from-build browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean \
+	proxy course course-notebooks course-html course-test course-then-html hub binder-constraints
 
 help:
 	@echo "make book     build the HTML book into book/_build/html (creates .venv if needed)"
@@ -38,6 +39,9 @@ help:
 	@echo "make bench    speed benchmarks (benchmarks/)"
 	@echo "make nbval-repeat  run every notebook three times; fail if an output changes"
 	@echo "make strip    remove outputs from every notebook before committing"
+	@echo "make course   the course kit in course/_build: students' notebooks, nbgrader, links, the course's HTML book"
+	@echo "              (CLASS=class.csv HUB=https://hub... REPO=git-url BRANCH=main; see book/lecturers.ipynb)"
+	@echo "make hub      JupyterHub for a class on this machine (course/jupyterhub_config.py; as root)"
 
 $(STAMP): environment.txt pyproject.toml
 	@test -d $(VENV) || $(PYTHON) -m venv $(VENV)
@@ -55,12 +59,22 @@ $(STAMP): environment.txt pyproject.toml
 
 venv: $(STAMP)
 
-$(VENDOR_STAMP): $(VENDOR)/package.json $(VENDOR)/package-lock.json
+# Every kernel of .venv reads this (figures as retina PNG); see book/ipython_kernel_config.py
+KERNEL_CONFIG := $(VENV)/etc/ipython/ipython_kernel_config.py
+$(KERNEL_CONFIG): book/ipython_kernel_config.py $(STAMP)
+	mkdir -p $(dir $@) && cp $< $@
+
+# npm, from Debian where it is missing and can be installed (root and apt-get)
+define NPM
 	@if ! command -v npm >/dev/null && [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
-		echo "installing Debian's npm to install the book's JavaScript"; \
-		apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq npm >/dev/null; \
+		echo "installing Debian's npm to install $(1)"; \
+		apt-get -o DPkg::Lock::Timeout=900 update -qq && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=900 install -y -qq npm >/dev/null; \
 	fi
-	@command -v npm >/dev/null || { echo "make book needs Node.js and npm to install MathJax, require.js and the widgets manager from npm (install npm, e.g. apt-get install npm)"; exit 1; }
+	@command -v npm >/dev/null || { echo "this needs Node.js and npm to install $(1) from npm (install npm, e.g. apt-get install npm)"; exit 1; }
+endef
+
+$(VENDOR_STAMP): $(VENDOR)/package.json $(VENDOR)/package-lock.json
+	$(call NPM,the book's JavaScript (MathJax and require.js and the widgets manager))
 	cd $(VENDOR) && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error
 	rm -rf $(VENDOR)/_static
 	mkdir -p $(VENDOR)/_static/mathjax $(VENDOR)/_static/mathjax/output $(VENDOR)/_static/requirejs $(VENDOR)/_static/html-manager
@@ -82,10 +96,11 @@ lint: $(STAMP)
 # The browser tests' modules list the built pages when collected: left out here, so that
 # `make test` can run this beside a book build that is rewriting book/_build.
 unit: $(STAMP)
-	MPLBACKEND=Agg $(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 -m "not book and not browser and not pdf" \
+	MPLBACKEND=Agg $(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 \
+		-m "not book and not browser and not pdf and not course and not course_html" \
 		--ignore=tests/test_browser.py --ignore=tests/test_lab.py
 
-notebooks: $(STAMP)
+notebooks: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/python -m pytest -q -p no:cacheprovider --nbval-lax --nbval-sanitize-with tests/nbval_sanitize.cfg \
 		--nbval-cell-timeout=300 -n 2 --dist loadfile $(wildcard $(NOTEBOOKS))
 
@@ -95,11 +110,11 @@ notebooks: $(STAMP)
 # parallel, one worker per CPU (JB_JOBS=1 for a serial build).
 # A clean build removes everything in book/_build but the screenshots, which the JupyterLab
 # test may be writing meanwhile (make test).
-build-book: $(STAMP) $(VENDOR_STAMP)
+build-book: $(STAMP) $(KERNEL_CONFIG) $(VENDOR_STAMP)
 	mkdir -p book/_build && find book/_build -mindepth 1 -maxdepth 1 ! -name screenshots -exec rm -rf {} +
 	$(BIN)/python book/build.py . $(JB_FLAGS)
 	@test -f book/_build/html/index.html
-	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py tests/test_exercise_leaks.py
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py tests/test_book_reading.py tests/test_exercise_leaks.py
 	@echo "The book is in book/_build/html/index.html"
 
 book: build-book
@@ -164,7 +179,7 @@ browser-pages: $(STAMP) chromium
 	@test -f book/_build/html/index.html || { echo "no built book: run make book first"; exit 1; }
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_browser.py
 
-browser-lab: $(STAMP) chromium
+browser-lab: $(STAMP) $(KERNEL_CONFIG) chromium
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m browser -n 2 --durations=3 tests/test_lab.py
 
 # after the build: its pages in Chromium, and the PDF from the same environment (side by side)
@@ -174,26 +189,79 @@ book-then-pages: build-book
 # The book build executes every notebook in a fresh kernel and fails on any error (as nbval
 # did here before; tests/test_repo.py checks that every notebook is in the book), so make
 # test does not run them twice; `make notebooks` runs them under nbval alone.
-# Three chains side by side on two cores, so that none leaves a core idle (kernel
+# Four chains side by side on two cores, so that none leaves a core idle (kernel
 # start-ups, Sphinx's serial steps, a browser waiting for a kernel): the unit tests, the
-# chapters in JupyterLab, and the book build followed by its pages in Chromium and the PDF.
-# -O prints each one's output whole when it ends.
+# chapters in JupyterLab, the book build followed by its pages in Chromium and the PDF, and
+# the course kit's tests followed, once the book is built (one build serves both chains),
+# by the course's HTML book. -O prints each one's output whole when it ends.
 test: lint
-	$(MAKE) --no-print-directory -j3 -O unit browser-lab book-then-pages
+	$(MAKE) --no-print-directory -j4 -O unit browser-lab book-then-pages course-then-html
+
+course-then-html: course-test build-book
+	$(MAKE) --no-print-directory course-html
 
 # JupyterLab (root must say so) at the book's start, with ipywidgets' extension for live widgets
-lab: $(STAMP)
+lab: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/jupyter lab $(if $(filter 0,$(shell id -u)),--allow-root) chapters/00_introduction.ipynb
 
-bench: $(STAMP)
+bench: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/python benchmarks/run.py
 
 # Determinism: every notebook three times in fresh kernels; outputs nbval compares must not change.
-nbval-repeat: $(STAMP)
+nbval-repeat: $(STAMP) $(KERNEL_CONFIG)
 	$(BIN)/python tests/notebook_tools.py repeat 3 $(wildcard $(NOTEBOOKS))
 
 strip: $(STAMP)
 	$(BIN)/python tests/notebook_tools.py strip $(wildcard $(NOTEBOOKS))
 
 clean:
-	rm -rf book/_build .pytest_cache .hypothesis $(VENDOR)/_static $(VENDOR)/node_modules
+	rm -rf book/_build .pytest_cache .hypothesis $(VENDOR)/_static $(VENDOR)/node_modules course/_build $(PROXY)/node_modules
+
+# The course kit (book/lecturers.ipynb). make course builds course/_build from the exercise
+# notebooks and their worked solutions: each student's notebooks (from the class list
+# CLASS), nbgrader's course directory (source with solutions and autograder tests, release,
+# gradebook), nbgitpuller links for the hub HUB pulling REPO at BRANCH (default: origin and
+# the current branch), and the course's HTML book (no solution pages) from the notebooks the
+# last book build executed (make book first when the chapters changed).
+CLASS ?= course/class.csv
+HUB ?= http://127.0.0.1:8000
+REPO ?=
+BRANCH ?=
+PROXY := course/proxy
+PROXY_STAMP := $(PROXY)/node_modules/.installed
+
+course-notebooks: $(STAMP)
+	$(BIN)/python -m course.build notebooks --classlist $(CLASS) --hub $(HUB) $(if $(REPO),--repo $(REPO)) \
+		$(if $(BRANCH),--branch $(BRANCH))
+
+course-html: $(STAMP) $(VENDOR_STAMP)
+	@test -d book/_build/jupyter_execute || $(MAKE) --no-print-directory build-book
+	$(BIN)/python -m course.build html
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m course_html tests/test_course_html.py
+
+course: course-notebooks course-html
+
+# configurable-http-proxy, JupyterHub's proxy, from npm (pinned in course/proxy/package-lock.json)
+$(PROXY_STAMP): $(PROXY)/package.json $(PROXY)/package-lock.json
+	$(call NPM,configurable-http-proxy)
+	cd $(PROXY) && npm ci --ignore-scripts --no-audit --no-fund --loglevel=error
+	@touch $@
+
+proxy: $(PROXY_STAMP)
+
+# JupyterHub for a class on this machine (PAM accounts, a server per student; settings in
+# course/jupyterhub_config.py: COURSE_CLASS, COURSE_ADMINS, COURSE_REPO, ...)
+hub: $(STAMP) $(PROXY_STAMP)
+	$(BIN)/jupyterhub -f course/jupyterhub_config.py
+
+# The kit's tests: the grader on a course built for a test class (tests/test_course.py), and
+# a class of two on JupyterHub whose servers run in a fresh environment installed from
+# binder/ (tests/test_course_hub.py), side by side
+course-test: $(STAMP) $(PROXY_STAMP)
+	$(BIN)/python -m pytest -q -p no:cacheprovider -m course -n 2 --dist loadfile --durations=6 \
+		tests/test_course.py tests/test_course_hub.py
+
+# binder/constraints.txt: the pins of environment.txt for repo2docker (a test compares them)
+binder-constraints:
+	{ sed -n 1,3p binder/constraints.txt; grep -E "^[A-Za-z0-9_.-]+==" environment.txt; } > binder/constraints.txt.new
+	mv binder/constraints.txt.new binder/constraints.txt

@@ -16,6 +16,7 @@ chapter  subpackage                  method (paper)
 4        :mod:`gearlib.adjacency`    complex adjacency matrix (Penaud and Alazard)
 5        :mod:`gearlib.davies`       Davies' method, efficiency (Laus)
 6        :mod:`gearlib.synthesis`    differential synthesis, atlas (Chen, Yao and Lee)
+7        :mod:`gearlib.linkages`     Davies' method for linkages and robots (Laus)
 =======  ==========================  =============================================
 
 Each subpackage lists its public names by module (``EXPORTS``) and the ones offered here as
@@ -36,7 +37,7 @@ from . import errors as _errors
 __version__ = "0.1.0"
 
 # the methods of the book, in the order of its chapters
-_METHODS = ("mechanism", "units", "gains", "adjacency", "davies", "synthesis")
+_METHODS = ("mechanism", "units", "gains", "adjacency", "davies", "synthesis", "linkages")
 _PACKAGES = (*_METHODS, "catalog", "check", "cli")
 _where: dict = {}
 

@@ -52,7 +52,7 @@ def representations(value, *, percent: bool = False) -> set[str]:
         for v in value.values():
             out |= representations(v, percent=percent)
         return out
-    if isinstance(value, (list, tuple, set, frozenset)):
+    if isinstance(value, (list, tuple, set, frozenset, sympy.MatrixBase)):
         return out  # link sets and matrices: checked entry by entry where it matters
     if isinstance(value, str):
         text = value.strip()
@@ -81,7 +81,9 @@ def representations(value, *, percent: bool = False) -> set[str]:
             re_, im_ = _sig(value.real, n), _sig(abs(value.imag), n)
             sign = "-" if value.imag < 0 else "+"
             out |= {f"{re_}{sign}{im_}j", f"{re_} {sign} {im_}j", f"{re_}{sign}{im_}i", f"{re_} {sign} {im_}i",
-                    f"{_sig(abs(value), n)}∠{_sig(cmath.phase(value), n)}"}
+                    f"{_sig(abs(value), n)}∠{_sig(cmath.phase(value), n)}",
+                    # the book's polar form: the angle in degrees (gearlib's polar_text)
+                    f"{_sig(abs(value), n)}∠{_sig(math.degrees(cmath.phase(value)), n)}°"}
         return {o for o in out if len(re.sub(r"[^0-9]", "", o)) >= 4}
     if isinstance(value, sympy.Basic):
         if value.free_symbols:

@@ -217,8 +217,28 @@ def test_matrix_display_matches_eq_14(car):
     assert view.entries[0] == ["-78", "13", "0", "0", "0", "0", "65"]
     assert view.entries[1][6] == "-14e^(-iπ/4) - 10e^(iπ/4)"
     polar = gl.show_matrix(gl.speed_ratio_matrix(car, zero_speed=[1], normalize_to=[3, 4]), style="polar")
-    assert polar.entries[4][0] == "0.8602∠0.9505" and polar.entries[1] == ["-2.5", "-2.5"]
+    # 0.5 + 0.7i exactly: modulus sqrt(0.74), direction atan(1.4) = 54.46 degrees
+    assert polar.entries[4][0] == "0.8602∠54.46°" and polar.entries[1] == ["-2.5", "-2.5"]
     assert "∠" in str(polar)
+
+
+def test_every_polar_form_in_gearlib_writes_degrees_with_the_sign():
+    """One polar form everywhere (chapter 4, the notation page): r∠phi° with phi in degrees, in
+    matrix tables, prose numbers, speed lists, directions and the CLI's speeds. The angle of
+    -1.4i is -90 degrees (-1.5708 rad); of 28 - 2.8i, atan(-0.1) = -5.7106 degrees."""
+    z = 28 - 2.8j
+    texts = {
+        "format_entry": gl.adjacency.format_entry(z, style="polar", digits=5),
+        "number": repr(gl.number(z, 5)),
+        "format_value": gl.mechanism.format_value(z, 5),
+    }
+    assert texts["format_entry"] == texts["number"] == texts["format_value"] == "28.14∠-5.7106°", texts
+    assert str(gl.direction(z)) == "28.1397∠-5.71059°"  # |z| = 28.13966, six digits
+    assert gl.number(-1.4j, 4)._repr_latex_() == r"$1.4\angle -90^\circ$"
+    assert gl.mechanism.format_value(-1.4j) == "1.4∠-90°" and gl.mechanism.format_value(-2.5 + 0j) == "-2.5"
+    car = gl.catalog.car_differential()
+    sol = gl.speeds(car, ground=1, inputs={3: 1, 4: -1})
+    assert "1.4∠90°" in str(sol) and "∠1.571" not in str(sol)
 
 
 def test_direction_of_a_complex_speed():

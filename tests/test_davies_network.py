@@ -1,6 +1,7 @@
 """The coupling graph, the layout, the network matrices, bad input, drawings, widget and CLI."""
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -202,3 +203,60 @@ def test_cli_text_and_errors():
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "held" in bad.stderr
     bad = run("efficiency", "humpage", "--input", "1", "--output", "4", "--eta-pair", "1-2=0.9")
     assert bad.returncode == 2 and "A,B=ETA" in bad.stderr
+
+
+# ----------------------------------------------------------------------------- what a reader sees
+def test_result_tables_are_padded_name_their_columns_and_round_noise():
+    """The efficiency table of chapter 5: padded cells (no "0.99-0.860656"), an arrow for the
+    driver, named columns with their meaning under the table; the 8HP70's sixth gear, where
+    no mesh rolls, prints 0 rather than 3e-31."""
+    res = gl.davies.efficiency(gl.catalog.load("laus_epicyclic"), 1, 5, 2, eta=0.99)
+    html = res._repr_html_()
+    assert "padding" in html and "1 → 3" in html and "-&gt;" not in html and "->" not in html
+    assert "ordinary η" in html and "ζ (signed)" in html and "per unit input power" in html
+    assert "η_ij" not in html
+    import dataclasses
+
+    unloaded = dataclasses.replace(res.meshes[0], virtual_power=3.05e-31, loss=-2e-17)
+    noise = dataclasses.replace(res, meshes=(unloaded,))
+    assert noise.table()[0][6:] == ("0", "0") and not re.search(r"\de-\d", noise._repr_html_())
+
+
+def test_layout_and_power_flow_drawings_say_what_they_show():
+    from matplotlib.figure import Figure
+
+    lay = gl.davies.layout(gl.catalog.humpage(), exact=False)
+    ax = gl.davies.plot_layout(lay, ax=Figure().add_subplot())
+    assert "plane x = 0" in ax.get_title()
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any("pitch point" in t for t in legend) and any("axis" in t for t in legend)
+    assert any("pitch line" in t for t in legend)  # a bevel train: lines from the apex
+    res = gl.davies.efficiency(gl.catalog.load("laus_epicyclic"), 1, 5, 2, eta=0.99)
+    ax = res.plot(ax=Figure().add_subplot())
+    ticks = [t.get_text() for t in ax.get_xticklabels()]
+    assert ticks[:3] == ["A\n1-5 in", "B\n1-2 out", "C\nmesh 1-3"]
+
+
+def test_efficiencies_named_by_gears():
+    """Laus names the compound planet's gears 3 and 4: the library's eta_3_2 (link 3 drives
+    link 2) is his eta_42, its eta_2_3 his eta_24 (Laus 2011, eqs. 76-79)."""
+    e13, e32, e23 = (sympy.Symbol(n, positive=True) for n in ("eta_1_3", "eta_3_2", "eta_2_3"))
+    out = gl.davies.by_gears(e13 * e32 + e23, {(2, 3): (2, 4)})
+    e42, e24 = (sympy.Symbol(n, positive=True) for n in ("eta_42", "eta_24"))
+    assert out == e13 * e42 + e24
+    formulas = gl.davies.efficiency_formulas(gl.catalog.load("laus_epicyclic"), 1, 5, 2)
+    names = {s.name for row in formulas for s in gl.davies.by_gears(row.formula, {(2, 3): (2, 4)}).free_symbols
+             if s.name.startswith("eta")}
+    assert names <= {"eta_1_3", "eta_3_1", "eta_42", "eta_24"} and {"eta_42", "eta_24"} <= names
+
+
+def test_a_ring_declared_external_is_named_as_the_likely_mistake():
+    """A planetary whose ring lacks `type: internal` does not close its loop of centre
+    distances (an external 18/60 pair needs its axes 39 apart, the sun puts them 21 apart):
+    the note says what to check, not only that the efficiency is unaffected."""
+    m = gl.Mechanism.from_dict({
+        "links": {1: "sun", 2: "planet", 3: "ring", 4: "carrier"},
+        "turning_pairs": [[3, 1, "a"], [3, 4, "a"], [4, 2, "b"]],
+        "gear_pairs": [{"gears": [1, 2], "teeth": [24, 18]}, {"gears": [2, 3], "teeth": [18, 60]}]})
+    res = gl.davies.efficiency(m, 3, 1, 4, eta=0.98)
+    assert any("type: internal" in n and "do not close a loop" in n for n in res.notes)

@@ -106,7 +106,7 @@ def number_leaks(text: str, value) -> list[str]:
     if abs(z.imag) > 1e-12 * max(1.0, abs(z)) or not math.isfinite(z.real):
         return []  # complex answers are found as expressions
     x = z.real
-    exact = sympy.nsimplify(value) if isinstance(value, sympy.Rational) else None
+    exact = value if isinstance(value, sympy.Rational) else None  # (nsimplify turned 8460/13 into powers)
     found = []
     for v, digits, s in _numbers(text):
         if digits is None:
@@ -151,11 +151,34 @@ def expression_leaks(text: str, expr) -> list[str]:
     if not expr.free_symbols:
         return []
     names = {s.name for s in expr.free_symbols}
+    linear = any(n.startswith("omega_") for n in names)  # a constraint sum a_i omega_i = 0: any multiple shows it
     out = []
     for c in _candidates(text):
-        if {s.name for s in c.free_symbols} == names and equivalent(c, expr):
+        if {s.name for s in c.free_symbols} == names and (equivalent(c, expr) or linear and _multiple(c, expr)):
             out.append(str(c))
     return out
+
+
+def _multiple(a, b, points: int = 4) -> bool:
+    """True when *a* is a constant non-zero multiple of *b* (their ratio is one number at
+    random rational points)."""
+    import random
+
+    symbols = sorted(a.free_symbols | b.free_symbols, key=str)
+    rng = random.Random(11)
+    ratios = []
+    for _ in range(3 * points):
+        point = {x: sympy.Rational(rng.randint(2, 97), rng.randint(2, 31)) for x in symbols}
+        try:
+            va, vb = a.xreplace(point), b.xreplace(point)
+        except (TypeError, ValueError, ZeroDivisionError):
+            continue
+        if vb == 0 or not (va.is_number and vb.is_number):
+            continue
+        ratios.append(sympy.nsimplify(va / vb))
+        if len(ratios) >= points:
+            break
+    return len(ratios) >= points and ratios[0] != 0 and all(r == ratios[0] for r in ratios)
 
 
 def leaks(text: str, reference) -> list[str]:
@@ -198,6 +221,13 @@ def test_expressions_are_found_up_to_algebra():
     m = sympy.Matrix([[1, 1 / e12], [0, 1 / (e12 * e23)]])
     assert expression_leaks("A = Matrix([[1, 1/e_1_2], [0, 1/(e_2_3*e_1_2)]])", m)
     assert not expression_leaks("A = Matrix([[1, 1/e_1_2], [0, 1/e_2_3]])", m)
+
+
+def test_a_constraint_is_found_up_to_a_factor():
+    w3, w4, e12 = sympy.symbols("omega_3 omega_4 e_1_2")
+    assert expression_leaks("the constraint -2*e_1_2*omega_3 + 2*omega_4 = 0", e12 * w3 - w4)
+    assert not expression_leaks("the constraint e_1_2*omega_3 + omega_4 = 0", e12 * w3 - w4)
+    assert not expression_leaks("a ratio 2*e_1_2 here", e12)  # other answers: equal up to algebra only
 
 
 def _chapter_file(chapter: str, folder: pathlib.Path) -> pathlib.Path | None:

@@ -144,6 +144,7 @@ def test_two_stage_gearbox_by_hand():
     assert ht[(2, 3)] == pytest.approx(ref["gmf"] * 3 / (21 * 39))
     ap = {r.links: r.frequency for r in t.select(family="assembly phase")}
     assert set(ap) == {(2, 3), (3, 0)} and ap[(2, 3)] == pytest.approx(ref["gmf"] / 3)
+    assert all("every 3rd tooth" in r.note for r in t.select(family="assembly phase"))
     # 99 = 33 x 3: planets in phase, so the planet-pass sidebands are GMF +/- k f_pp
     t3 = gl.fault_table(m, inputs={1: "1480rpm"}, sidebands=2)
     comb = sorted(r.frequency for r in t3.select(family="planet pass", kind="sideband"))

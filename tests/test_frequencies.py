@@ -321,6 +321,37 @@ def test_static_twin_plots(car):
         gl.plot_cornering(car, what="torques", ax=ax)
 
 
+def test_cornering_twin_names_every_curve_without_overlap(car):
+    """The static twin names each curve beside the axes (no legend), at 8 pt, and pushes the
+    labels apart: ball (300), BPFO (319) and BPFI (381 rad/s) lie within 0.11 decades."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(7.5, 4.2))
+    ax = gl.plot_cornering(car, ax=fig.add_subplot())
+    fig.canvas.draw()
+    labels = [t for t in ax.texts if t.get_text() and not t.get_text().startswith("R =")]
+    names = [t.get_text() for t in labels]
+    assert ax.get_legend() is None and {"BPFI (2 bearings)", "BPFO (2 bearings)", "ball (2 bearings)"} <= set(names)
+    assert min(t.get_fontsize() for t in labels) >= 8
+    # label centres (axes fractions, va=center) at least one line of 8-pt text apart, in pixels
+    centres = sorted(t.xyann[1] * ax.bbox.height for t in labels)
+    line = 1.2 * 8 * fig.dpi / 72
+    assert all(b - a >= line for a, b in zip(centres, centres[1:])), "two curve labels overlap"
+
+
+def test_table_titles_name_the_bearing_convention_only_with_bearings(car):
+    """Example 1 has no bearings: no "(standard bearing formulas)" in its title. Table cells are
+    padded and the pair column does not wrap ("(2, 7)" stays on one line)."""
+    t1 = gl.frequency_table(gl.catalog.load("penaud_example_1"), ground=1, inputs={2: 10})
+    assert "bearing" not in t1.title and "bearing" not in str(t1).splitlines()[0]
+    t2 = gl.frequency_table(car, ground=1, inputs={3: 26, 4: 30})
+    assert t2.title.endswith("(standard bearing formulas)")
+    html = t2._repr_html_()
+    assert "padding" in html and "white-space: nowrap'>(2, 7)</td>" in html
+    ax = t2.plot()
+    assert "not an amplitude" in ax.get_ylabel()
+
+
 # ----------------------------------------------------------------------------- command line
 CORNER = ("frequencies", "car_differential", "--ground", "1", "--input", "3=26", "--input", "4=30")
 

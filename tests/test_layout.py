@@ -20,7 +20,7 @@ from gearlib._common.exports import names_and_modules
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 PKG = ROOT / "gearlib"
-METHODS = ("mechanism", "units", "gains", "adjacency", "davies", "synthesis")
+METHODS = ("mechanism", "units", "gains", "adjacency", "davies", "synthesis", "linkages")
 
 # gearlib.__all__ before the subpackages existed: every name must still resolve as gl.<name>
 BEFORE = [
@@ -108,7 +108,7 @@ def test_no_import_cycles():
 # exception: chapter 1's solver gl.speeds(method="nullspace") solves with chapter 4's
 # matrix module, which stands on the mechanism data alone (checked below).
 LAYER = {"errors": 0, "_common": 1, "mechanism": 2, "catalog": 3, "units": 4, "gains": 5, "adjacency": 4,
-         "davies": 4, "synthesis": 4, "check": 6, "cli": 6, "__main__": 7, "conftest": 9}
+         "davies": 4, "synthesis": 4, "linkages": 5, "check": 6, "cli": 6, "__main__": 7, "conftest": 9}
 UPWARD = {("gearlib.mechanism.kinematics", "gearlib.adjacency.matrix")}
 
 

@@ -154,3 +154,14 @@ def test_drawing_takes_an_axes():
     fig, ax = plt.subplots()
     assert gl.draw_levers(gl.catalog.simpson(), ax=ax) is ax
     plt.close(fig)
+
+
+def test_the_housing_is_marked_held_without_a_state():
+    """The frame is held in every state: a lever member that is the mechanism's ground carries
+    a ground mark even when no state is drawn (Liu-Chen's transmission: the carrier 5 of KU2
+    is the housing)."""
+    mech = gl.catalog.load("liu_chen_transmission")
+    geo = gl.gains.lever_geometry(gl.lever_diagram(mech))
+    marks = [e for e in geo["elements"] if e[1] == "brake"]
+    assert [e[2] for e in marks] == [(mech.ground,)]
+    assert not geo["speeds"]

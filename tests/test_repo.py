@@ -85,3 +85,44 @@ def test_plotting_does_not_change_matplotlib_settings():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT)
     assert out.stdout.strip() == "True"
+
+
+def _documented_on_the_api_page() -> set[str]:
+    """Every name book/api.md documents: each autodoc target, the members it lists, and the
+    public names of a module documented with all its members."""
+    import importlib
+    import re
+
+    lines = (ROOT / "book" / "api.md").read_text(encoding="utf-8").splitlines()
+    names = set()
+    for i, line in enumerate(lines):
+        m = re.match(r"\.\. auto(\w+):: ([\w.]+)", line.strip())
+        if not m:
+            continue
+        kind, target = m.groups()
+        names.add(target.rsplit(".", 1)[-1])
+        following = lines[i + 1].strip() if i + 1 < len(lines) else ""
+        if following.startswith(":members:"):
+            listed = following[len(":members:"):].strip()
+            if listed:
+                names |= {x.strip() for x in listed.split(",")}
+            elif kind == "module":
+                names |= set(getattr(importlib.import_module(target), "__all__", ()))
+    return names
+
+
+def test_every_function_a_chapter_calls_is_on_the_api_page():
+    """The book's first page promises that the API reference documents every function the
+    chapters call (``gl.<name>(...)``)."""
+    import re
+
+    documented = _documented_on_the_api_page()
+    missing = {}
+    for p in sorted((ROOT / "chapters").glob("*.ipynb")):
+        for cell in json.loads(p.read_text(encoding="utf-8"))["cells"]:
+            if cell["cell_type"] != "code":
+                continue
+            for m in re.finditer(r"\bgl\.((?:\w+\.)*\w+)\s*\(", "".join(cell["source"])):
+                if m.group(1).rsplit(".", 1)[-1] not in documented:
+                    missing.setdefault(f"gl.{m.group(1)}", set()).add(p.stem)
+    assert not missing, f"called in a chapter, not on book/api.md: {missing}"

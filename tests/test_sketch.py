@@ -467,3 +467,203 @@ def test_the_sketch_command_says_what_is_wrong_in_one_line(tmp_path, args, messa
     r = run("sketch", *args)
     assert r.returncode == 2
     assert len(r.stderr.strip().splitlines()) == 1 and message in r.stderr and "Traceback" not in r.stderr
+
+
+# ----------------------------------------------------------------------------- profile shift
+def _inv(a):
+    return math.tan(a) - a
+
+
+def _working_distance(z1, z2, x1, x2, internal=False, degrees=20.0, module=1.0):
+    """The working centre distance of a profile-shifted spur pair, from the involute function:
+    inv(alpha_w) = inv(alpha) + 2 tan(alpha) (x1 + x2) / (z1 + z2) (for an internal pair the
+    differences, ring minus pinion), a_w = a cos(alpha) / cos(alpha_w), solved here by bisection."""
+    alpha = math.radians(degrees)
+    zs, xs = ((z2 - z1), (x2 - x1)) if internal else ((z1 + z2), (x1 + x2))
+    target = _inv(alpha) + 2 * math.tan(alpha) * xs / zs
+    lo, hi = 1e-6, math.radians(60)
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if _inv(mid) < target else (lo, mid)
+    return module * zs / 2 * math.cos(alpha) / math.cos((lo + hi) / 2)
+
+
+def test_a_profile_shifted_pair_is_drawn_at_its_working_centre_distance():
+    """Gears of 12 and 30 teeth, module 2, shifted +0.5 and +0.1: their axes are drawn a_w apart
+    (not (12 + 30) module / 2 = 42), and their blocks touch."""
+    mech = gl.Mechanism.from_dict({
+        "name": "shifted pair", "links": {0: "frame", 1: "pinion", 2: "wheel"},
+        "turning_pairs": [[0, 1, "a"], [0, 2, "b"]],
+        "gear_pairs": [{"gears": [1, 2], "teeth": [12, 30], "module": 2, "profile_shift": [0.5, 0.1]}],
+        "ground": 0, "inputs": [1], "output": 2})
+    sk = gl.sketch_layout(mech)
+    assert sk.notes == ()
+    ys = sorted(a.start[1] for a in sk.axes)
+    a_w = _working_distance(12, 30, 0.5, 0.1, module=2)
+    assert a_w > 42 + 0.5   # the shift opens the centre distance
+    assert ys[1] - ys[0] == pytest.approx(a_w, rel=1e-9)
+    check_sketch(mech, sk)
+
+
+def test_the_6hp26_long_pinion_runs_at_its_working_centre_distance():
+    """ZF 6HP26: the long pinion 10 (23 teeth, x = 0.25) meshes the large sun 5 (38, x = 0.2793) and
+    the ring 7 (85, x = 0.25, internal): both working centre distances are 31 modules to the data's
+    rounding, not the 30.5 the reference radii give the sun pair; the pinion's axis is drawn there,
+    and the sketch notes nothing."""
+    mech = gl.catalog.load("zf_6hp26")
+    sk = gl.sketch_layout(mech)
+    assert sk.notes == ()
+    sun = _working_distance(23, 38, 0.25, 0.2793)
+    ring = _working_distance(23, 85, 0.25, 0.25, internal=True)
+    assert sun == pytest.approx(ring, abs=1e-3) and abs(sun - 30.5) > 0.4
+    module = next(b.radius for b in sk.blocks if b.link == 4) / (31 / 2)   # the unshifted small sun
+    label = mech.coaxial(10, 6)
+    (axis,) = [a for a in sk.axes if a.label == label]
+    assert axis.start[1] == pytest.approx(sun * module, rel=1e-9)
+    check_sketch(mech, sk)
+
+
+# ----------------------------------------------------------------------------- double pinions
+@pytest.mark.parametrize("name, short, long", [("ravigneaux", 5, 6), ("zf_6hp26", 9, 10)])
+def test_the_pinions_of_a_ravigneaux_set_stand_side_by_side(name, short, long):
+    """The short and the long pinion stand at different angles about the axis: drawn in two planes
+    side by side, touching along their common height, never one over the other."""
+    sk = gl.sketch_layout(gl.catalog.load(name))
+    (a,), (b,) = ([x for x in sk.blocks if x.link == link] for link in (short, long))
+    assert _overlap_area(a.polygon, b.polygon) < 1e-9 * sk.scale
+    ya = sorted(y for _, y in a.polygon)
+    yb = sorted(y for _, y in b.polygon)
+    common = min(ya[-1], yb[-1]) - max(ya[0], yb[0])
+    assert _shared_edge(list(a.polygon), list(b.polygon), 1e-9 * sk.scale) == pytest.approx(common)
+
+
+# ----------------------------------------------------------------------------- labels on the page
+def _segments_in_points(ax, sk):
+    """Every drawn line piece in display points with its half width, and the link it belongs to
+    for the edges of the gear blocks (from the layout: the blocks are drawn in its order); the
+    dotted leaders from a label to its link are left out."""
+    out = []
+    for coll in ax.collections:
+        gid = coll.get_gid()
+        if gid == "leaders":
+            continue
+        widths = list(coll.get_linewidths()) or [1.0]
+        if gid == "blocks":
+            pieces = [np.array(b.polygon + (b.polygon[0],)) for b in sk.blocks]
+            owners = [b.link for b in sk.blocks]
+        elif hasattr(coll, "get_segments"):
+            pieces = coll.get_segments()
+            owners = [None] * len(pieces)
+        else:   # the hatched frame: its outlines
+            pieces = [p.vertices for p in coll.get_paths()]
+            owners = [None] * len(pieces)
+        for i, (seg, owner) in enumerate(zip(pieces, owners)):
+            pts = ax.transData.transform(np.asarray(seg, dtype=float)[:, :2])
+            half = widths[i % len(widths)] / 2 * ax.figure.dpi / 72
+            out += [(pts[j], pts[j + 1], half, owner) for j in range(len(pts) - 1)]
+    return out
+
+
+def _box_meets_segment(box, p, q, half):
+    x0, y0, x1, y1 = box.x0 - half, box.y0 - half, box.x1 + half, box.y1 + half
+    if max(p[0], q[0]) <= x0 or min(p[0], q[0]) >= x1 or max(p[1], q[1]) <= y0 or min(p[1], q[1]) >= y1:
+        return False
+    d = q - p
+    sides = [d[0] * (cy - p[1]) - d[1] * (cx - p[0]) for cx, cy in ((x0, y0), (x1, y0), (x0, y1), (x1, y1))]
+    return not (all(s > 0 for s in sides) or all(s < 0 for s in sides))
+
+
+def _label_boxes(ax):
+    """(text, box of its white patch in display points) of every label drawn."""
+    fig = ax.figure
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    return [(t.get_text(), (t.get_bbox_patch() or t).get_window_extent(renderer)) for t in ax.texts]
+
+
+@pytest.mark.parametrize("name", CATALOGUE)
+def test_labels_overlap_no_line_and_no_other_label(name):
+    """On the rendered figure (text extents from the renderer, not from the layout): no two labels'
+    boxes (link ids, brake and clutch names) overlap, and none meets a drawn line, another link's
+    gear block or the hatched frame (a link's id may sit on its own block, over its outline)."""
+    mech = gl.catalog.load(name)
+    sk = gl.sketch_layout(mech)
+    ax = gl.draw_sketch(mech)
+    tol = 0.5 * ax.figure.dpi / 72   # half a point: boxes that only touch do not overlap
+    labels = _label_boxes(ax)
+    for i, (ta, a) in enumerate(labels):
+        for tb, b in labels[i + 1:]:
+            overlap = min(a.x1, b.x1) - max(a.x0, b.x0), min(a.y1, b.y1) - max(a.y0, b.y0)
+            assert min(overlap) <= tol, (name, ta, tb)
+    segments = _segments_in_points(ax, sk)
+    ids = {str(link) for link in mech.link_ids}
+    for text, box in labels:
+        own = text.split(" ")[0] if text.split(" ")[0] in ids else None
+        inner = box.padded(-tol)
+        hits = [(p, q) for p, q, half, owner in segments
+                if str(owner) != own and _box_meets_segment(inner, p, q, half)]
+        assert not hits, (name, text, hits[:2])
+    plt.close(ax.figure)
+
+
+# ----------------------------------------------------------------------------- crossings, recounted
+def _crossings_drawn(sk):
+    """Every point where a horizontal piece of one link (shaft, drum, pin) and a vertical piece of
+    another (spoke, arm, riser) cross, counted on the drawn lines themselves, not by the router."""
+    tol = 1e-7 * sk.scale
+    flat, upright = [], []
+    for ln in sk.lines:
+        (x0, y0), (x1, y1) = ln.start, ln.end
+        if abs(y0 - y1) < tol < abs(x0 - x1):
+            flat.append((min(x0, x1), max(x0, x1), y0, ln))
+        elif abs(x0 - x1) < tol < abs(y0 - y1):
+            upright.append((x0, min(y0, y1), max(y0, y1), {ln.link}, ln.kind))
+    for sym in sk.symbols:   # a clutch: its two spokes and the gap between its plates are one piece
+        if sym.kind != "clutch":
+            continue
+        x = (sym.segments[0][0][0] + sym.segments[0][1][0]) / 2
+        parts = [u for u in upright if abs(u[0] - x) < tol and u[3] <= set(sym.links) and u[4] == "spoke"]
+        if len(parts) == 2:
+            upright = [u for u in upright if u not in parts]
+            upright.append((x, min(u[1] for u in parts), max(u[2] for u in parts), set(sym.links), "clutch"))
+    return [(h.kind, h.link, kind, tuple(links)) for x0, x1, y, h in flat for x, ya, yb, links, kind in upright
+            if h.link not in links and x0 + tol < x < x1 - tol and ya + tol < y < yb - tol]
+
+
+def _pins_through_gears(sk):
+    """Visible pin pieces that run through a gear block of another axis (a pin may pass behind the
+    other pinion of its set, drawn as a hidden, dashed, piece)."""
+    tol = 1e-7 * sk.scale
+    out = []
+    for ln in sk.lines:
+        if ln.kind != "pin" or abs(ln.start[1] - ln.end[1]) > tol:
+            continue
+        y = ln.start[1]
+        x0, x1 = sorted((ln.start[0], ln.end[0]))
+        for b in sk.blocks:
+            xs, ys = [p[0] for p in b.polygon], [p[1] for p in b.polygon]
+            centred = abs((min(ys) + max(ys)) / 2 - y) < tol   # a planet on this pin
+            if not centred and min(ys) + tol < y < max(ys) - tol and min(x1, max(xs)) - max(x0, min(xs)) > tol:
+                out.append((ln.link, b.link))
+    return out
+
+
+@pytest.mark.parametrize("name", CATALOGUE)
+def test_no_drawn_line_crosses_another(name):
+    """Recounted on the geometry: no piece of one link crosses a line of another, and no visible
+    pin runs through another axis's gear, in any catalogue sketch."""
+    sk = gl.sketch_layout(gl.catalog.load(name))
+    assert _crossings_drawn(sk) == []
+    assert _pins_through_gears(sk) == []
+
+
+def test_the_crossings_a_sketch_reports_are_the_ones_drawn():
+    """The router's count is the drawing's: on random coaxial trains, some of which it cannot draw
+    without a crossing, the recount on the drawn lines equals ``Sketch.crossings``."""
+    counted = []
+    for seed in range(0, 200, 4):
+        sk = gl.sketch_layout(random_coaxial(seed))
+        drawn = len(_crossings_drawn(sk)) + len(_pins_through_gears(sk))
+        assert drawn == sk.crossings, seed
+        counted.append(drawn)
+    assert max(counted) > 0   # the check met trains that need crossings

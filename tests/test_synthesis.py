@@ -350,3 +350,76 @@ def test_the_constraint_in_numbers():
     assert by_symbol == by_pair and synthesis.proportional(by_symbol, direct)
     assert synthesis.terminal_constraint(GKC8, (1, 2, 4), ground=0).numeric() is None or \
         synthesis.terminal_constraint(GKC8, (1, 2, 4), ground=0).count == 1
+# --------------------------------------------------------------------- drawing layout
+def _segments_cross(p, q, r, s):
+    """Proper crossing of segments pq and rs, by the signs of four cross products (computed
+    here, independently of gearlib's layout code)."""
+    def side(a, b, c):
+        v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        return 0 if abs(v) < 1e-12 else (1 if v > 0 else -1)
+
+    return side(p, q, r) * side(p, q, s) < 0 and side(r, s, p) * side(r, s, q) < 0
+
+
+def _drawing_faults(pos, mech):
+    """(pairs of edges that cross, vertices within 5 % of the drawing's size of an edge they
+    are not an end of)."""
+    edges = {frozenset(tp.links) for tp in mech.turning_pairs} | {frozenset(gp.gears) for gp in mech.gear_pairs}
+    edges = [tuple(e) for e in edges]
+    crossing = [(e, f) for e, f in itertools.combinations(edges, 2)
+                if not set(e) & set(f) and _segments_cross(pos[e[0]], pos[e[1]], pos[f[0]], pos[f[1]])]
+    pts = np.array([pos[v] for v in mech.link_ids], dtype=float)
+    size = max(np.ptp(pts[:, 0]), np.ptp(pts[:, 1]))
+    on_edge = []
+    for v in mech.link_ids:
+        p = np.array(pos[v], dtype=float)
+        for a, b in edges:
+            if v in (a, b):
+                continue
+            x, y = np.array(pos[a], dtype=float), np.array(pos[b], dtype=float)
+            t = np.clip(np.dot(p - x, y - x) / np.dot(y - x, y - x), 0, 1)
+            if np.linalg.norm(x + t * (y - x) - p) < 0.05 * size:
+                on_edge.append((v, (a, b)))
+    return crossing, on_edge
+
+
+def test_chain_layout_draws_the_chapters_chains_without_crossings():
+    """Every chain chapter 6 draws is planar (networkx says so), and chain_layout draws it with
+    no crossing edge and no link on a foreign edge; the default layout crosses edges in the
+    standard differential and in both of CYL's chains, so the test would see a regression."""
+    import networkx as nx
+
+    from gearlib.mechanism.plot import graph_layout
+
+    seven = {m.name: m for m in gl.atlas.geared_chains(7, 2)}
+    chains = [DIFF, GKC7, GKC8, *gl.atlas.geared_chains(4, 1), *gl.atlas.geared_chains(6, 2),
+              *(seven[f"GKC 7-2-{k}"] for k in (7, 18, 24, 25, 49, 50))]
+    for mech in chains:
+        g = nx.Graph([tp.links for tp in mech.turning_pairs] + [gp.gears for gp in mech.gear_pairs])
+        assert nx.check_planarity(g)[0], mech.name
+        pos = gl.synthesis.chain_layout(mech)
+        assert sorted(pos) == sorted(mech.link_ids)
+        crossing, on_edge = _drawing_faults(pos, mech)
+        assert crossing == [] and on_edge == [], (mech.name, crossing, on_edge)
+        assert gl.synthesis.chain_layout(mech) == pos  # deterministic
+    for mech in (DIFF, GKC7, GKC8):
+        assert _drawing_faults(graph_layout(mech), mech)[0], mech.name
+
+
+def test_chain_layout_on_a_non_planar_graph_and_a_given_layout():
+    """K3,3 cannot be drawn without a crossing: the layout keeps at most the crossings of the
+    layout it starts from. A mechanism's own layout is returned unchanged."""
+    from gearlib.synthesis._layout import layout
+
+    nodes = tuple(range(6))
+    edges = tuple((a, b) for a in (0, 1, 2) for b in (3, 4, 5))
+    start = tuple((v, (float(v % 3), float(v // 3) + 0.1 * v)) for v in nodes)
+
+    def count(pos):
+        return sum(1 for e, f in itertools.combinations(edges, 2)
+                   if not set(e) & set(f) and _segments_cross(pos[e[0]], pos[e[1]], pos[f[0]], pos[f[1]]))
+
+    pos = dict(layout(nodes, edges, start))
+    assert 1 <= count(pos) <= count(dict(start))
+    own = {x: (float(i), float(i % 2)) for i, x in enumerate(DIFF.link_ids)}
+    assert gl.synthesis.chain_layout(DIFF.replace(layout=own)) == own

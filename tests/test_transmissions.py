@@ -374,6 +374,46 @@ def test_concentricity_over_the_chapter_3_ring_sweep():
         assert c.ok == (ring - 30 - 2 * 24 == 0) and c.value == ring - 30 - 48
 
 
+def test_concentric_teeth_keep_every_set_buildable():
+    """A ring resized with its planet following: the planet is (Z_r - Z_s) / 2 by hand, the set
+    is concentric, and the carrier turns at Z_s / (Z_s + Z_r) of the sun with the ring held
+    (the textbook formula, not gearlib's solver)."""
+    base = gl.catalog.simple_planetary(sun=30, ring=78, planet=24)
+    for ring in range(60, 110, 2):
+        m = gl.with_concentric_teeth(base, {3: ring})
+        assert [gp.teeth for gp in m.gear_pairs] == [(30, (ring - 30) // 2), ((ring - 30) // 2, ring)]
+        assert all(c.ok for c in gl.assembly_conditions(m))
+        assert gl.ratio(m, output=4, input=1, ground=3) == sympy.Rational(30, 30 + ring)
+    # the transmission's ring 1 is shared by two sets: both planets follow it
+    t = gl.with_concentric_teeth(gl.catalog.load("liu_chen_transmission"), {1: 80})
+    teeth = {gp.gears: gp.teeth for gp in t.gear_pairs}
+    assert teeth[(1, 6)] == (80, 25) and teeth[(1, 7)] == (80, 22) and teeth[(2, 3)] == (30, 24)
+    for bad, text in (({3: 61}, "odd number"), ({3: 40}, "fewer than 12"), ({2: 20}, "not the sun or the ring"),
+                      ({3: 70.5}, "whole number")):
+        with pytest.raises(gl.InputError, match=text):
+            gl.with_concentric_teeth(base, bad, min_planet_teeth=12)
+
+
+def test_transmission_explorer_and_its_twin_show_only_sets_that_assemble():
+    mech = gl.catalog.load("liu_chen_transmission")
+    ex = gl.gains.transmission_explorer(mech, gl.transmission.LIU_CHEN_MODES, pairs=[(1, 6), (7, 8), (3, 5)],
+                                        concentric=True)
+    assert set(ex.teeth) == {"N_1", "N_8", "N_5"}
+    ex.update(mode="3rd", N_5=90)
+    assert "planets 3: 30, 6: 21, 7: 18 teeth" in ex.text and "does not assemble" not in ex.text
+    assert all(c.ok for c in gl.assembly_conditions(ex.mechanism_for()))
+    ex.update(N_1=40)
+    assert "no such set" in ex.text and "planet 6" in ex.text
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", gl.AssemblyWarning)   # no set of the sweep fails to assemble
+        ax = gl.transmission.plot_mode_sweep(mech, gl.transmission.LIU_CHEN_MODES, pair=(3, 5), gear=5,
+                                             values=range(60, 110, 6), concentric=True)
+    assert "does not assemble" not in [t.get_text() for t in ax.get_legend().get_texts()]
+    import matplotlib.pyplot as plt
+
+    plt.close(ax.figure)
+
+
 def _planetary(sun, planet, ring, count, **pair):
     m = gl.catalog.simple_planetary(sun=sun, ring=ring, planet=planet)
     return m.replace(planets={2: count}, gear_pairs=[gp if not pair else type(gp)(**{**gp.__dict__, **pair})

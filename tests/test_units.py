@@ -206,6 +206,9 @@ def test_propagation_graph_of_fig1_and_fig3a():
     assert {("theta_1,4", "KU1"), ("theta_6,4", "KU2"), ("KU1", "KU3"), ("KU2", "KU3"), ("KU3", "theta_3,5")} \
         <= set(g.edges())
     assert g.edges["KU1", "KU3"]["kind"] == "coaxial triangle"
+    # theta_2,5 = theta_2,4 + theta_4,5 = theta_2,4 - theta_5,4 (eq. 10): KU2's output arrives reversed
+    assert (g.edges["KU1", "KU3"]["sign"], g.edges["KU2", "KU3"]["sign"]) == (1, -1)
+    assert g.edges["KU2", "KU3"]["signal"] == "theta_5,4"
 
 
 def test_third_gear_plan_tears_the_common_linkage():
@@ -235,3 +238,17 @@ def test_cli_units_json():
     assert data["common_linkages"] == [{"kind": "2-link chain", "units": ["KU1", "KU2"], "links": [1, 5], "axis": "a"}]
     bad = run("units", "nope.yaml")
     assert bad.returncode == 2 and "Traceback" not in bad.stderr and len(bad.stderr.strip().splitlines()) == 1
+
+
+def test_catalogue_drawing_of_chosen_entries():
+    """draw_ku_catalogue(names=...) draws those units, one per panel titled with its name, so
+    that a chapter can split the eighteen panels into figures a reader can read."""
+    import matplotlib.pyplot as plt
+
+    names = ["K3-1", "K4-1", "K4-1S", "K4-2"]
+    fig, axes = plt.subplots(1, 4)
+    gl.units.draw_ku_catalogue(axes, names=names)
+    assert [ax.get_title() for ax in axes] == names
+    with pytest.raises(gl.InputError, match="K9-1"):
+        gl.units.draw_ku_catalogue(axes, names=["K9-1"])
+    plt.close(fig)

@@ -52,6 +52,21 @@ def test_efficiency_explorer_reports_the_laus_efficiency():
     assert "0.94621" in ex.text  # Laus (2011), eq. (76) at z = 80, 60, 30, 35
 
 
+def test_efficiency_explorer_labels_every_slider_differently_by_gear():
+    """Link 3 of Laus's epicyclic train carries gears 3 and 4: two tooth sliders must not both
+    read N_3, and the mesh of annulus 2 is the mesh of gears 2 and 4 (Laus's eta_42)."""
+    import ipywidgets
+
+    epi = gl.catalog.load("laus_epicyclic")
+    plain = efficiency_explorer(epi, 1, 5, 2).labels()
+    assert len(set(plain.values())) == len(plain) == 6
+    assert plain["N_3_in_1_3"] == "N_3 (1-3)" and plain["N_3_in_2_3"] == "N_3 (2-3)"
+    named = efficiency_explorer(epi, 1, 5, 2, gears={(2, 3): (2, 4)})
+    assert sorted(named.labels().values()) == ["N_1", "N_2", "N_3", "N_4", "η 1-3", "η 2-4"]
+    shown = [c.description for row in named.controls(ipywidgets) for c in row.children]
+    assert sorted(shown) == sorted(named.labels().values())
+
+
 @pytest.mark.parametrize("keep", [False, True])
 def test_canvas_panels_and_frames(keep):
     import matplotlib.pyplot as plt
@@ -126,7 +141,7 @@ def test_encode_png_is_read_back_by_pillow():
 
 def _sweeps():
     """Each widget with a sequence of states that moves limits, titles, tick labels and legends."""
-    k = "N_1_in_1_2"
+    k = "N_1"
     laus = gl.catalog.load("laus_epicyclic")
     gears = gl.gains.transmission_explorer(gl.catalog.load("liu_chen_transmission"),
                                                   gl.transmission.LIU_CHEN_MODES)

@@ -1,15 +1,26 @@
-"""Readable matrices: labelled rows and columns, complex entries as ``N e^(i theta)`` or ``r∠phi``."""
+"""Readable matrices: labelled rows and columns, complex entries as ``N e^(i theta)`` or ``r∠phi°``.
+
+The book writes a complex speed in polar form in one way everywhere: ``r∠phi°``, the modulus
+``r`` and the direction ``phi`` in **degrees**, always with the degree sign
+(:func:`polar_text`; its LaTeX twin :func:`polar_latex`). The exponential form
+``r e^(i theta)`` keeps ``theta`` in radians, as Penaud and Alazard write it.
+"""
 
 from __future__ import annotations
 
 import cmath
 import html
+import math
 import re
 from dataclasses import dataclass
 
 import sympy
 
-__all__ = ["MatrixView", "format_entry"]
+__all__ = ["MatrixView", "format_entry", "polar_text", "polar_latex", "exp_text", "PAD"]
+
+PAD = "padding: 0.15em 0.45em"
+"""The cell padding of gearlib's HTML tables: entries never run into each other."""
+NOWRAP = "; white-space: nowrap"  # a short row label such as "(2, 7)/1" stays on one line
 
 
 def _exponent(theta) -> str:
@@ -47,13 +58,54 @@ def _number(x: float, digits: int) -> str:
     return "0" if text in ("0", "-0") else text
 
 
-def _polar(z: complex, digits: int) -> str:
+def _polar_parts(z: complex, digits: int) -> tuple[str, str] | None:
+    """``(modulus, degrees)`` as text, or None when *z* is real (to the tolerance)."""
     scale = max(1.0, abs(z))
-    if abs(z) <= 1e-12 * scale:
-        return "0"
     if abs(z.imag) <= 1e-12 * scale:
-        return _number(z.real, digits)
-    return f"{_number(abs(z), digits)}∠{cmath.phase(z):.{digits}g}"
+        return None
+    return _number(abs(z), digits), _number(math.degrees(cmath.phase(z)), digits)
+
+
+def polar_text(z, digits: int = 4) -> str:
+    """A complex number as ``r∠phi°`` (angle in degrees, with its sign); a real one as a plain
+    number; zero as ``0``.
+
+    >>> polar_text(0.5 + 0.7j)
+    '0.8602∠54.46°'
+    >>> polar_text(-1.4j, 6), polar_text(-2.5 + 0j)
+    ('1.4∠-90°', '-2.5')
+    """
+    z = complex(z)
+    if abs(z) <= 1e-12 * max(1.0, abs(z)):
+        return "0"
+    parts = _polar_parts(z, digits)
+    return _number(z.real, digits) if parts is None else f"{parts[0]}∠{parts[1]}°"
+
+
+def exp_text(z, digits: int = 4) -> str:
+    """A complex number in Penaud and Alazard's exponential form ``r e^(phi i)``, the angle in
+    radians (to compare with the paper's printed values); a real one as a plain number.
+
+    >>> exp_text(0.5 - 0.7j)
+    '0.8602 e^(-0.9505i)'
+    """
+    z = complex(z)
+    if abs(z) <= 1e-12 * max(1.0, abs(z)) or abs(z.imag) <= 1e-12 * max(1.0, abs(z)):
+        return polar_text(z, digits)
+    return f"{_number(abs(z), digits)} e^({_number(cmath.phase(z), digits)}i)"
+
+
+def polar_latex(z, digits: int = 4) -> str:
+    """The LaTeX of :func:`polar_text`: ``r\\angle phi^\\circ``.
+
+    >>> print(polar_latex(1.4j))
+    1.4\\angle 90^\\circ
+    """
+    z = complex(z)
+    parts = _polar_parts(z, digits)
+    if parts is None:
+        return polar_text(z, digits)
+    return rf"{parts[0]}\angle {parts[1]}^\circ"
 
 
 def format_entry(value, *, style: str = "exact", digits: int = 4) -> str:
@@ -65,7 +117,9 @@ def format_entry(value, *, style: str = "exact", digits: int = 4) -> str:
     >>> format_entry(-15 * sympy.exp(sympy.I * sympy.pi / 4) - 10 * sympy.exp(-sympy.I * sympy.pi / 12))
     '-15e^(iπ/4) - 10e^(-iπ/12)'
     >>> format_entry(0.5 + 0.7j, style="polar")
-    '0.8602∠0.9505'
+    '0.8602∠54.46°'
+    >>> format_entry(0.5 + 0.7j, style="exp")           # the paper's form, radians
+    '0.8602 e^(0.9505i)'
     """
     if isinstance(value, str):
         return value
@@ -84,7 +138,9 @@ def format_entry(value, *, style: str = "exact", digits: int = 4) -> str:
                 parts.append((sign if k or c < 0 else "") + body)
             return " ".join(parts).replace("+", "+ ").replace(" -", " - ").lstrip() if len(parts) > 1 else parts[0]
         value = complex(sympy.N(value, 20))
-    return _polar(complex(value), digits)
+    if style == "exp":
+        return exp_text(complex(value), digits)
+    return polar_text(complex(value), digits)
 
 
 @dataclass(frozen=True)
@@ -113,11 +169,12 @@ class MatrixView:
             text = html.escape(text)
             return re.sub(r"e\^\(([^()]*)\)", r"e<sup>\1</sup>", text)
 
-        head = "".join(f"<th>{html.escape(c)}</th>" for c in self.cols)
+        head = "".join(f"<th style='{PAD}'>{html.escape(c)}</th>" for c in self.cols)
         body = "".join(
-            f"<tr><th>{html.escape(r)}</th>" + "".join(f"<td style='text-align:center'>{cell(v)}</td>" for v in row)
+            f"<tr><th style='{PAD}{NOWRAP if len(r) <= 16 else ''}'>{html.escape(r)}</th>"
+            + "".join(f"<td style='{PAD}; text-align: center'>{cell(v)}</td>" for v in row)
             + "</tr>"
             for r, row in zip(self.rows, self.entries)
         )
         caption = f"<caption>{html.escape(self.title)}</caption>" if self.title else ""
-        return f"<table>{caption}<tr><th></th>{head}</tr>{body}</table>"
+        return f"<table>{caption}<tr><th style='{PAD}'></th>{head}</tr>{body}</table>"

@@ -96,7 +96,9 @@ def plot_fault_map(table, ax=None, *, families=None, fmin=None, fmax=None, xscal
     top.tick_params(labelsize=fontsize)
     ax.tick_params(axis="x", labelsize=fontsize)
     ax.set_title(title if title is not None else
-                 f"fault frequency map, {table.mechanism.name} at {60 * ref:.5g} rpm of the reference", fontsize=9)
+                 f"fault frequency map of the {table.mechanism.name}: "
+                 f"{'link ' if '/' not in str(table.reference) else ''}{table.reference} at {60 * ref:.5g} rpm",
+                 fontsize=9)
     if labels:
         _place_labels(ax, table, rows, y_of, fontsize)
     return ax

@@ -121,7 +121,13 @@ def mesh_lines(em, mech, w, ground, sets):
                     f"common factor {n_a})")
         if n_a > 1:
             em.add("assembly phase", "assembly phase", f"assembly phase {pair}", f"AP{pair}", fm / n_a, links=gp.gears,
-                   note=f"{n_a} assembly phases: a tooth meets every {n_a}th tooth of the other gear")
+                   note=f"{n_a} assembly phases: a tooth meets every {_ordinal(n_a)} tooth of the other gear")
+
+
+def _ordinal(n: int) -> str:
+    """``2nd``, ``3rd``, ``4th``, ``11th``, ``21st``."""
+    suffix = "th" if 10 <= n % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+    return f"{n}{suffix}"
 
 
 def _mcfadden_smith(mech, w, ground, s):

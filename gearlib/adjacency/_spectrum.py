@@ -62,11 +62,13 @@ def spectrum_key(lines) -> list[str]:
     return [f"{n:>2}  {f:.4g}  {group_label(rows)}" for n, (f, rows) in enumerate(lines, start=1)]
 
 
-def plot_spectrum(table, ax=None, *, log=None, kinds=None, key: bool = True, title=None, fontsize: float = 7):
+def plot_spectrum(table, ax=None, *, log=None, kinds=None, key: bool = True, title=None, fontsize: float = 8):
     """The frequency table as a line spectrum.
 
     One vertical line per distinct frequency, coloured by the kind of its tallest contact
-    (mesh, tooth, bearing) and numbered; with ``key=True`` a key beside the axes names the
+    (mesh, tooth, bearing) and numbered. A line's height shows its kind only (meshes tallest,
+    then ring defects, balls, teeth, the cage), never an amplitude: the table predicts where
+    lines fall, not how strong they are. With ``key=True`` a key beside the axes names the
     contacts of each line. Lines at zero frequency (contacts that do not move relative to
     each other) are left out. ``log`` uses a logarithmic axis (default: when the
     frequencies span more than a factor 30). Returns the axes.
@@ -119,6 +121,7 @@ def plot_spectrum(table, ax=None, *, log=None, kinds=None, key: bool = True, tit
     entries = spectrum_key(lines)
     ax.set_ylim(0, 1.75)
     ax.set_yticks([])
+    ax.set_ylabel("height: kind of line\n(not an amplitude)", fontsize=fontsize)
     ax.set_xlabel(f"frequency ({table.unit})")
     if legend_done:
         ax.legend(fontsize=fontsize, loc="upper left", ncols=min(3, len(legend_done)), frameon=False)

@@ -27,6 +27,7 @@ import numbers
 import numpy as np
 
 from .matrix import speed_ratio_matrix
+from .._common.matview import polar_text
 from ..errors import DataFormatError, InputError
 from ._spectrum import spectral_lines, spectrum_key
 from .frequencies import FrequencyTable, frequency_table, plot_spectrum
@@ -39,6 +40,10 @@ WHEEL_RADIUS = 25 / 84
 """Wheel radius (m) that turns 30 km/h into a mean wheel speed of 28 rad/s, as in Penaud and Alazard."""
 TRACK = 1.5
 """Track (m) between the driven wheels, this book's assumption."""
+
+DARK = ("#1f4e9a", "#c0392b", "#2e7d32", "#e67e00", "#6a3d9a", "#8c564b", "#00838f", "#ad1457", "#222222",
+        "#7a7a00")
+"""Curve colours of the static twin: dark enough for thin lines and small labels on white."""
 
 
 def _positive(value, what) -> float:
@@ -80,10 +85,7 @@ def _plot_link_speeds(solution, ax, title=None):
     ax.set_yticks(y, names, fontsize=7)
     top = float(np.abs(z).max(initial=0.0)) or 1.0
     for yy, v in zip(y, z):
-        if abs(v.imag) > 1e-9 * max(1.0, abs(v)):
-            text = f"{abs(v):.4g}∠{math.degrees(np.angle(v)):.1f}°"
-        else:
-            text = f"{v.real:.4g}"
+        text = polar_text(v if abs(v.imag) > 1e-9 * max(1.0, abs(v)) else v.real, 4)
         ax.text(abs(v) + 0.02 * top, yy, text, va="center", fontsize=7)
     ax.set_xlim(0, top * 1.45)
     ax.set_xlabel("|ω| (rad/s)")
@@ -150,7 +152,9 @@ class CorneringExplorer(Explorer):
         summary = f"{speed:g} km/h, {where}: left wheel {wl:.4g} rad/s, right wheel {wr:.4g} rad/s"
         # the key of the numbered lines is text beside the picture (HTML), not drawn into it
         key = "\n".join(spectrum_key(spectral_lines(table)))
-        self.text = f"{html.escape(summary)}<pre style='font-size: 11px; line-height: 1.2'>{html.escape(key)}</pre>"
+        # left-aligned: in the book the widget sits in a centred figure
+        style = "font-size: 11px; line-height: 1.2; text-align: left"
+        self.text = f"{html.escape(summary)}<pre style='{style}'>{html.escape(key)}</pre>"
         if self._canvas is None:
             from ..mechanism.widgets import Canvas
 
@@ -206,7 +210,7 @@ def plot_cornering(mech: Mechanism | None = None, *, speed=30.0, curvatures=None
             columns.append(table.frequencies())
             labels = labels or [[r] for r in table.rows]
     data = np.array(columns)
-    ax = _axes(ax, figsize=(7.5, 3.6))
+    ax = _axes(ax, figsize=(7.5, 4.2))
     drawn: list[tuple[np.ndarray, list]] = []
     for j, label in enumerate(labels):
         y = data[:, j]
@@ -216,21 +220,55 @@ def plot_cornering(mech: Mechanism | None = None, *, speed=30.0, curvatures=None
                 break
         else:
             drawn.append((y, [label]))
-    for i, (y, members) in enumerate(drawn):
+    ends = []
+    colors = DARK
+    for y, members in drawn:
         if np.all(y < 1e-9):
             continue
         if what == "speeds":
             text = ", ".join(members)
         else:
             text = group_label([r for rows in members for r in rows])
-        ax.plot(ks, np.where(y > 1e-9, y, np.nan), label=text if len(text) < 45 else text[:44] + "…",
-                linestyle="-" if i < 10 else "--")
+        bearing = what == "frequencies" and members[0][0].kind not in ("mesh", "tooth")
+        color = colors[len(ends) % len(colors)]
+        shown = np.where(y > 1e-9, y, np.nan)
+        ax.plot(ks, shown, color=color, linewidth=1.6, linestyle="--" if bearing else "-")
+        end = int(np.nanargmax(np.where(np.isnan(shown), -np.inf, ks)))
+        ends.append((ks[end], shown[end], text if len(text) < 40 else text[:39] + "…", color))
     if what == "frequencies":
         ax.set_yscale("log")
     if mark is not None:
         ax.axvline(mark, color="0.5", linestyle=":", linewidth=1)
+        ax.annotate(f"R = {1 / mark:.3g} m", xy=(mark, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -2),
+                    textcoords="offset points", fontsize=8, color="0.35", ha="left", va="top")
     ax.set_xlabel("curvature 1/R of the turn (1/m); < 0 left, > 0 right")
     ax.set_ylabel("frequency (rad/s)" if what == "frequencies" else "|ω| (rad/s)")
-    ax.legend(fontsize=6, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
-    ax.set_title(title if title is not None else f"{what} of {m.name} at {speed:g} km/h")
+    ax.set_title(title if title is not None else f"{what} of {m.name} at {speed:g} km/h"
+                 + ("; dashed: bearing lines" if what == "frequencies" else ""), fontsize=10)
+    _label_ends(ax, ends, fontsize=8)
     return ax
+
+
+def _label_ends(ax, ends, fontsize=8.0):
+    """Name every curve at its right end, in the margin beside the axes, the labels pushed
+    apart so that none overlaps another (a thin leader joins a moved label to its curve)."""
+    fig = ax.figure
+    height_in = ax.get_position().height * fig.get_figheight()
+    gap = 1.45 * fontsize / 72 / height_in  # one label's height and a little air, in axes fractions
+    to_axes = ax.transAxes.inverted()
+    spots = []
+    for x, y, text, color in ends:
+        _, fy = to_axes.transform(ax.transData.transform((x, y)))
+        spots.append([fy, fy, text, color])
+    spots.sort(key=lambda s: s[0])
+    # push apart: upwards from the bottom, then back down from the top if the column overflows
+    for k in range(1, len(spots)):
+        spots[k][1] = max(spots[k][1], spots[k - 1][1] + gap)
+    top = 1.0
+    for k in range(len(spots) - 1, -1, -1):
+        spots[k][1] = min(spots[k][1], top)
+        top = spots[k][1] - gap
+    for fy, ly, text, color in spots:
+        ax.annotate(text, xy=(1.0, fy), xycoords="axes fraction", xytext=(1.06, ly), textcoords="axes fraction",
+                    fontsize=fontsize, color=color, va="center", ha="left", annotation_clip=False,
+                    arrowprops={"arrowstyle": "-", "color": color, "lw": 0.7, "shrinkA": 0, "shrinkB": 1})

@@ -285,24 +285,36 @@ class FrequencyTable:
         def line(cells):
             return "  ".join(f"{c:{a}{w}}" for c, a, w in zip(cells, align, widths)).rstrip()
 
-        lines = [f"contact frequencies of {self.mechanism.name!r} ({self.convention} bearing formulas)", line(head)]
+        lines = [self.title, line(head)]
         lines += [line(r) for r in rows]
         return "\n".join(lines)
 
     def __repr__(self) -> str:
         return str(self)
 
+    @property
+    def title(self) -> str:
+        """``contact frequencies of <name>``, with the bearing convention when the table has
+        bearing lines."""
+        has_bearings = any(r.kind not in ("mesh", "tooth") for r in self.rows)
+        return f"contact frequencies of {self.mechanism.name}" + (
+            f" ({self.convention} bearing formulas)" if has_bearings else "")
+
     def _repr_html_(self) -> str:
         import html
 
+        from .._common.matview import PAD
+
         body = "".join(
-            "<tr>" + "".join(f"<td style='text-align:{a}'>{html.escape(x)}</td>" for x, a in
-                             zip(r, ("left", "right", "left", "right"))) + "</tr>"
+            "<tr>" + "".join(f"<td style='{PAD}; text-align: {a}{'; white-space: nowrap' if k == 0 else ''}'>"
+                             f"{html.escape(x)}</td>" for k, (x, a) in
+                             enumerate(zip(r, ("left", "right", "left", "right")))) + "</tr>"
             for r in self.table()
         )
-        return (f"<table><caption>Contact frequencies of {html.escape(self.mechanism.name)} "
-                f"({self.convention} bearing formulas)</caption><tr><th>pair</th>"
-                f"<th>frequency ({html.escape(self.unit)})</th><th>description</th><th>sources</th></tr>{body}</table>")
+        head = "".join(f"<th style='{PAD}'>{html.escape(h)}</th>"
+                       for h in ("pair", f"frequency ({self.unit})", "description", "sources"))
+        title = self.title
+        return f"<table><caption>{html.escape(title[0].upper() + title[1:])}</caption><tr>{head}</tr>{body}</table>"
 
     def plot(self, ax=None, **kwargs):
         """The table as a spectrum, see :func:`plot_spectrum`."""

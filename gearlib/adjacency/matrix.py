@@ -6,10 +6,10 @@ The table ``T`` of links and joints has ``T(i, j) = "p"`` for a turning pair and
 ``M[l, k] = -T(i, j) - T(j, i)``: the Willis equation with a complex ratio
 ``e_{i,j} = -T(i,j)/T(j,i)``. Every speed vector lies in ``Ker M``.
 
-Two traps (``seed-notes`` section 6): ``Ker M`` always contains ``[1, ..., 1]`` (the whole
-mechanism turning as one body), so with one link grounded the degrees of freedom are
-``N - rank(M) - 1``; and a null-space basis is not unique, so compare normalised speed
-ratios (or subspaces, :func:`same_subspace`), never raw basis columns. Derived in chapter 4.
+Two traps (chapter 4 and the book's :ref:`notes on the sources <sources-pa>`): ``Ker M``
+always contains ``[1, ..., 1]`` (the whole mechanism turning as one body), so with one link
+grounded the degrees of freedom are ``N - rank(M) - 1``; and a null-space basis is not
+unique, so compare normalised speed ratios (or subspaces, :func:`same_subspace`), never raw basis columns. Derived in chapter 4.
 
 >>> import gearlib as gl
 >>> diff = gl.catalog.car_differential()
@@ -20,7 +20,7 @@ ratios (or subspaces, :func:`same_subspace`), never raw basis columns. Derived i
 >>> np.round(W[[1, 6]].real, 6).tolist()
 [[-2.5, -2.5], [0.5, 0.5]]
 >>> print(gl.direction(W[4, 0]))
-0.860233 at 54.4623°
+0.860233∠54.4623°
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy
 
-from .._common.matview import MatrixView, format_entry
+from .._common.matview import MatrixView, format_entry, polar_text
 from ..errors import ConstraintError, DataFormatError, InputError
 from ..mechanism.data import Mechanism
 from ..mechanism.data import requires_mechanism
@@ -282,7 +282,7 @@ def speed_ratio_matrix(mech: Mechanism, *, zero_speed=(), normalize_to=(), equal
     >>> ex1 = gl.catalog.load("penaud_example_1")
     >>> W = gl.speed_ratio_matrix(ex1, zero_speed=[1], normalize_to=[2])
     >>> [str(gl.direction(w)) for w in W[:, 0]]
-    ['0', '1 at 0°', '1.36216 at 36.5868°', '0.625 at 0°']
+    ['0', '1', '1.36216∠36.5868°', '0.625']
     """
     M = adjacency_matrix(mech)
     C = constraint_rows(mech, zero_speed=zero_speed, equal=equal)
@@ -324,9 +324,10 @@ class Direction:
         return math.degrees(self.angle)
 
     def __str__(self) -> str:
+        """``r∠phi°``, the book's polar form (the angle in degrees)."""
         if self.magnitude == 0:
             return "0"
-        return f"{self.magnitude:.6g} at {self.degrees:.6g}°"
+        return polar_text(cmath.rect(self.magnitude, self.angle), 6)
 
 
 def direction(z, tol: float = 1e-12) -> Direction:
@@ -371,11 +372,11 @@ def show_matrix(A, *, rows=None, cols=None, title: str = "", style: str = "exact
 
     *A* is a :class:`~gearlib.Mechanism` (its matrix ``M``, rows labelled ``(i, j)/k``) or an
     array. ``style="exact"`` keeps ``N e^{i theta}`` terms where they are known;
-    ``style="polar"`` writes every entry as ``r∠phi``.
+    ``style="polar"`` writes every entry as ``r∠phi°`` (the angle in degrees).
 
     >>> print(gl.show_matrix(np.array([[1, -2j]]), rows=["r"], cols=["a", "b"], style="polar"))
        a         b
-    r  1  2∠-1.571
+    r  1  2∠-90°
     """
     if isinstance(A, Mechanism):
         mech = A

@@ -2,7 +2,7 @@
 
 Every entry is a YAML file in ``gearlib/catalog/data/`` (copy one to start your own), and
 cites its source in ``mechanism.source``. Figures missing from the papers' text are
-reconstructed as described in the book's notes on the sources.
+reconstructed as described in the book's :ref:`notes on the sources <sources>`.
 
 >>> import gearlib as gl
 >>> "car_differential" in gl.catalog.names()

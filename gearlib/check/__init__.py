@@ -4,7 +4,7 @@ A check answers a right answer with a short confirmation and a wrong one with a 
 diagnoses the usual mistakes of its kind of quantity; it never shows the answer (no
 attribute, method, repr or message of a check carries it), never raises, and returns in
 bounded time whatever it is given. Answers may be ints, floats, fractions, complex numbers,
-numpy or sympy values, or text (``"2/7"``, ``"−1.3846"``, ``"450 Hz"``, ``"89.6 %"``); a
+numpy or sympy values, or text (``"2/7"``, ``"−1.3846"``, ``"120 Hz"``, ``"89.6 %"``); a
 decimal is right when it is within half a unit of its last digit.
 
 >>> import gearlib as gl
@@ -18,8 +18,9 @@ decimal is right when it is within half a unit of its last digit.
 Each check is numbered and described (``exercise``, ``title``, ``stars``, ``minutes``,
 ``kind``), can draw other numbers for a student (``check(answer, variant="s1234")``,
 ``check.given(variant)``, ``check.statement(variant)``), and returns a
-:class:`CheckResult` a grader can score. Chapters register their checks in their own
-module here (``gearlib/check/<subpackage>.py``) with :func:`register` and a spec
+:class:`CheckResult` a grader can score; :func:`grade` is a course autograder's test
+cell, and :func:`student` the variant a course notebook uses. Chapters register their checks
+in their own module here (``gearlib/check/<subpackage>.py``) with :func:`register` and a spec
 (:class:`Value`, :class:`Symbolic`, :class:`Choice`, ...); every module of this package whose
 name does not start with ``_`` is imported on first use.
 """
@@ -34,6 +35,8 @@ from ..errors import UnknownLinkError
 from ._choice import Choice, Groups, LinkId, LinkSet, Parts
 from ._core import KINDS, REGISTRY, Check, Prediction, register, register_custom
 from ._design import Condition, Design, Matrix
+from ._grade import VARIANT_VARIABLE, student
+from ._grade import score as _score
 from ._model import Model, Scenario
 from ._read import Unreadable
 from ._result import CheckResult
@@ -43,7 +46,7 @@ from ._value import QUANTITIES, Hint, Mistake, Symbolic, Value
 __all__ = ["names", "get", "catalogue", "register", "register_custom", "Check", "CheckResult", "KINDS",
            "QUANTITIES", "Value", "Symbolic", "Mistake", "Hint", "Choice", "LinkId", "LinkSet", "Groups",
            "Parts", "Model", "Scenario", "Design", "Condition", "Matrix", "Prediction", "Spec", "Verdict",
-           "Unreadable"]
+           "Unreadable", "student", "grade", "VARIANT_VARIABLE"]
 
 _loaded = False
 
@@ -75,6 +78,21 @@ def get(name: str) -> Check:
 class UnknownCheckError(UnknownLinkError, AttributeError):
     """No exercise check of that name (an :class:`AttributeError` too, so ``hasattr(gl.check, name)``
     keeps working)."""
+
+
+def grade(name: str, answer, variant=None) -> float:
+    """An autograder's test: check *answer* to exercise check *name* for *variant* (see
+    :func:`student`), print the verdict (the check's hint when the answer is wrong, never the
+    answer) and return the points it earns, between 0 and the exercise's points (its stars;
+    parts of an answer that are right count their share). nbgrader reads the returned number
+    as the cell's partial credit.
+
+    >>> import gearlib as gl
+    >>> gl.check.grade("intro_gear_ratio", None)
+    ✘ Not yet. No answer yet: replace `None` with your answer.
+    0.0
+    """
+    return _score(get(name), answer, variant)
 
 
 def _order(check: Check) -> tuple:

@@ -60,6 +60,8 @@ class Choice(Spec):
         if isinstance(answer, bool):
             raise Unreadable(f"give {self.form}, not True or False")
         if isinstance(answer, int):
+            if answer.bit_length() > 64:
+                raise Unreadable(f"that number is far too large: give {self.form}")
             answer = str(answer)
         if not isinstance(answer, str):
             raise Unreadable(f"give {self.form}, as text")

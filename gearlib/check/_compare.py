@@ -77,8 +77,11 @@ def agreement(reading, reference, *, floor: float = FLOOR) -> Agreement:
     a, e = numeric(value), numeric(reference)
     spread = complex(reading.spread)
     s_re, s_im = abs(spread.real), abs(spread.imag)
-    if reading.exact and _is_integer(sympy.sympify(value)) and not _is_integer(sympy.sympify(reference)):
-        s_re = 0.5  # a whole number given for a value that is not one: rounded to units
+    if (reading.exact and _is_integer(sympy.sympify(value)) and not _is_integer(sympy.sympify(reference))
+            and abs(a) >= 10):
+        # a whole number of two digits or more given for a value that is not one ("2827" for
+        # 2827.43): rounded to units; a single digit (1 for 0.625, 3 for 3.4) is taken as meant
+        s_re = 0.5
     size = max(abs(a), abs(e))
     d = a - e
     tol = floor * size

@@ -146,7 +146,8 @@ class _Parser:
                 node = ("num", sympy.Rational(exact.numerator, exact.denominator))
             return ("*", node, ("const", sympy.I)) if extra else node
         if kind == "name":
-            if self.peek()[:2] == ("op", "("):
+            if self.peek()[:2] == ("op", "(") and not (self.names_ok and "_" in value and value not in _FUNCTIONS):
+                # a subscripted name before a bracket ("e_1_4 (e_3_8 - e_6_8)") is a product, not a call
                 if value not in _FUNCTIONS:
                     raise Unreadable(f"unknown function {value!r}")
                 self.take()

@@ -7,7 +7,7 @@ number, so that ``9**9**9**9`` or ``"1e999999"`` get a message at once instead o
 Text may use ``I``, ``i`` or ``j`` for the imaginary unit (``2+3j``, ``2.5*exp(i*pi/3)``),
 the Unicode minus and multiplication signs of a rendered page (``−``, ``×``, ``·``), ``π``,
 Greek letters for names (``ω_4`` is ``omega_4``), ``e_{1,2}`` for ``e_1_2``, a percent sign
-and a unit suffix (``"450 Hz"``, ``"2827 rad/s"``, ``"89.6 %"``).
+and a unit suffix (``"120 Hz"``, ``"2827 rad/s"``, ``"3.2 orders"``, ``"89.6 %"``).
 
 A decimal number carries its precision: ``"0.2857"`` is 0.2857 give or take half a unit of
 its last digit, and so is the float ``0.2857`` (read by its shortest repr). The precision of
@@ -37,6 +37,7 @@ UNITS = {
     "rpm": ("rpm", 1), "r/min": ("rpm", 1), "rev/min": ("rpm", 1), "1/min": ("rpm", 1), "min^-1": ("rpm", 1),
     "deg/s": ("deg/s", 1), "°/s": ("deg/s", 1),
     "mm": ("mm", 1), "cm": ("mm", 10), "m": ("mm", 1000),
+    "orders": ("orders", 1), "order": ("orders", 1),
 }
 _UNIT_SUFFIX = re.compile(r"^(?P<body>.*?\S)\s*(?P<unit>" + "|".join(
     re.escape(u) for u in sorted(UNITS, key=len, reverse=True)) + r")\s*$", re.IGNORECASE | re.S)
@@ -190,7 +191,8 @@ def read(answer, *, names: bool = False) -> Reading:
             raise Unreadable("the answer is not a finite number (NaN or infinity)")
         return read_text(str(answer), units=False)
     if isinstance(answer, sympy.Basic):
-        if isinstance(answer, (sympy.core.relational.Relational, sympy.logic.boolalg.Boolean)):
+        if isinstance(answer, sympy.core.relational.Relational) or (
+                isinstance(answer, sympy.logic.boolalg.Boolean) and not isinstance(answer, sympy.Expr)):  # a Symbol is both
             raise Unreadable("give an expression, not an equation or a condition (drop the `Eq(...)`)")
         if isinstance(answer, sympy.MatrixBase) or not isinstance(answer, sympy.Expr):
             raise Unreadable("this asks for a single value")

@@ -15,7 +15,8 @@ from ._choice import Choice, Parts
 from ._core import Prediction, register
 from ._value import Mistake, Symbolic, Value
 
-__all__ = ["intro_gear_ratio", "intro_planetary_ratio", "intro_sun_held", "intro_star", "intro_willis_frame"]
+__all__ = ["intro_gear_ratio", "intro_planetary_ratio", "intro_sun_held", "intro_star", "intro_willis_frame",
+           "intro_data_sheet"]
 
 
 def _planetary(sun: int, planet: int, ring: int):
@@ -171,3 +172,49 @@ _REASON = Choice(_REASONS, wrong={
 )
 def intro_willis_frame():
     return {"link": "the carrier", "reason": "A"}
+
+
+# ----------------------------------------------------------------------------- 0.6
+_SHEET = {
+    "A": "The planet does not fit between the sun and the ring: with one module, N_ring = N_sun + 2 N_planet.",
+    "B": "A ring gear must have an even number of teeth.",
+    "C": "The sun must have more teeth than the planet.",
+    "D": "With the ring held, the carrier would turn backwards.",
+}
+
+
+def _sheet(rng) -> dict:
+    sun, planet = rng.randint(16, 40), rng.randint(14, 36)
+    return {"sun": sun, "planet": planet, "printed_ring": sun + 2 * planet + rng.choice((-6, -4, -3, 3, 4, 6))}
+
+
+@register(
+    "intro_data_sheet", exercise="0.6", title="Find the mistake in a data sheet", stars=1, minutes=10,
+    kind="mistake",
+    question="A data sheet lists a simple planetary, all gears of one module, with a sun of {sun} teeth, planets of "
+             "{planet} and a ring of {printed_ring}. These numbers cannot all be right. Give (a) the condition they "
+             "break (reason 'A', 'B', 'C' or 'D'), (b) the ring's number of teeth if the sun and the planets are "
+             "right, and (c) with that ring held and the sun driving, the ratio omega_carrier / omega_sun.",
+    data={"sun": 21, "planet": 27, "printed_ring": 72},
+    params=_sheet,
+    answer=Parts({
+        "reason": ("the reason", Choice(_SHEET, wrong={
+            "B": "Rings with an odd number of teeth are made and run; the trouble is elsewhere.",
+            "C": "Planets larger than the sun are common (a large reduction needs them).",
+            "D": "With the ring held the carrier always turns the same way as the sun; the trouble is elsewhere."})),
+        "ring": ("the ring's teeth", Value("count", mistakes=[
+            Mistake(lambda e, p: p["sun"] + p["planet"], "Across the ring's pitch diameter lie the sun and two "
+                    "planets, one on each side."),
+            Mistake(lambda e, p: p["printed_ring"], "That is the printed number, which does not fit."),
+        ], generic="Lay the pitch diameters across the centre: the ring's spans the sun's and two planets'.")),
+        "ratio": ("the ratio", Value("ratio", mistakes=[
+            Mistake(lambda e, p: Fraction(p["sun"], p["sun"] + p["printed_ring"]), "That uses the printed ring, "
+                    "which does not fit: use the ring of part (b)."),
+        ])),
+    }),
+)
+def intro_data_sheet(sun, planet, printed_ring):
+    from ..mechanism.kinematics import ratio
+
+    ring = sun + 2 * planet
+    return {"reason": "A", "ring": ring, "ratio": ratio(_planetary(sun, planet, ring), output=4, input=1, ground=3)}

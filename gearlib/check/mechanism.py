@@ -209,6 +209,8 @@ _STEPS = Choice(["1", "2", "3", "4", "5"], wrong={
     answer=Parts({"step": ("the wrong step", _STEPS), "ratio": ("the ratio", Value("ratio", mistakes=[
         Mistake(lambda e, p: p["result_printed"], "That is the derivation's own result: correct the wrong step "
                 "first."),
+        Mistake(lambda e, p: Fraction(p["sun"], p["ring"]), "That is N_sun/N_ring, the size of the ring's ratio to the "
+                "sun with the carrier held; with the ring held the carrier turns, and step 4 still applies."),
     ]))}),
 )
 def graph_mistake_derivation(sun, planet, ring, E_printed, result_printed):

@@ -1,24 +1,30 @@
-"""Checks for chapter 6's exercises (``exercises/06_differential_synthesis.ipynb``).
+"""Checks for exercises 6.1 to 6.6 of chapter 6 (``exercises/06_differential_synthesis.ipynb``):
+the atlas chain GKC 7-2-7, counts over the atlas. Exercises 6.7 to 6.9 (a double-planet centre
+differential) are in :mod:`gearlib.check.differentials`, 6.10 to 6.12 (eight-link chains) in
+:mod:`gearlib.check.synthesis_eight`.
 
-The chapter works GKC 5-7-2 and the eight-link chain through and lists the seven-link DGMs;
-the exercises take the atlas chain GKC 7-2-7, which the chapter does not show, and count over
-the seven-link atlas. Expected answers are computed by :mod:`gearlib.synthesis`.
+The chapter works GKC 5-7-2 and CYL's eight-link chain through and lists the seven-link DGMs;
+the exercises take the atlas chain GKC 7-2-7, which the chapter does not show, count over the
+seven-link atlas, and count the fractionated chains the chapter leaves out. Expected answers
+are computed by :mod:`gearlib.synthesis`.
 """
 
 from __future__ import annotations
 
 import functools
+import re
+
 import sympy
 
 from ._choice import Choice, LinkId, LinkSet, Parts
-from ._compare import proportional
-from ._core import register
+from ._compare import equivalent, proportional
+from ._core import Prediction, register
 from ._spec import Spec, Verdict
 from ._read import Unreadable, read
 from ._value import Mistake, Value
 
 __all__ = ["synth_ground_links", "synth_constraint", "synth_redundant_links", "synth_many_grounds",
-           "synth_two_constraints", "CHAIN"]
+           "synth_two_constraints", "synth_fractionated_six", "CHAIN", "Constraint"]
 
 CHAIN = "GKC 7-2-7"
 """The atlas chain of exercises 6.1, 6.2, 6.3 and 6.5:
@@ -52,17 +58,25 @@ def synth_ground_links():
     return identify(_chain()).grounds
 
 
-class _Constraint(Spec):
+class Constraint(Spec):
     """A linear relation among terminal speeds, ``a1*omega_t1 + ...`` or ``[a1, ...]``, up to a
-    non-zero factor."""
+    non-zero factor (projective equivalence). CYL's ``gamma_a_b`` (``γ_{a,b}``) is read as
+    ``e_a_b``. The reference function returns the coefficients; the check keeps the equation
+    ``sum a_i omega_i``. ``name_extra=False`` does not name a ratio the chain does not have
+    (when finding it is the exercise)."""
 
-    def __init__(self, terminals, ratios):
+    def __init__(self, terminals, ratios, *, name_extra: bool = True,
+                 generic: str = "Set the ground's speed to zero in the circuit equations, then eliminate the "
+                                "non-terminal speeds one at a time (a speed that appears in one equation only "
+                                "just defines that link's speed)"):
         self.terminals, self.ratios = tuple(terminals), tuple(ratios)
+        self.name_extra, self.generic = name_extra, generic
+        self.omegas = [sympy.Symbol(f"omega_{t}") for t in self.terminals]
         self.form = ("an expression " + " + ".join(f"a{k + 1}*omega_{t}" for k, t in enumerate(self.terminals))
                      + " (the '= 0' left out), or the list of its coefficients")
 
     def prepare(self, reference):
-        return [sympy.sympify(c) for c in reference]
+        return sum(sympy.sympify(c) * w for c, w in zip(reference, self.omegas))
 
     def check_form(self, answer) -> None:
         if isinstance(answer, (list, tuple)):
@@ -75,38 +89,51 @@ class _Constraint(Spec):
             read(answer, names=True)
 
     def example(self, reference, params):
-        return sum(c * sympy.Symbol(f"omega_{t}") for c, t in zip(reference, self.terminals))
+        return reference
+
+    def _coefficients(self, answer):
+        """The coefficients of the answer (sympy), or a message saying why there are none."""
+        ws = self.omegas
+        if isinstance(answer, (list, tuple)):
+            self.check_form(answer)
+            return [_as_e(read(c, names=True).value) for c in answer]
+        expr = _as_e(read(answer, names=True).value)
+        coeffs = [sympy.diff(expr, w) for w in ws]  # no expansion: a power of a sum stays small
+        if any(c.has(w) for c in coeffs for w in ws):
+            return "The constraint is linear in the speeds: each term is a coefficient times one omega"
+        if not equivalent(expr - sum(a * w for a, w in zip(coeffs, ws)), 0):
+            return "Write the constraint as " + self.form
+        return coeffs
 
     def judge(self, answer, reference, params) -> Verdict:
-        ws = [sympy.Symbol(f"omega_{t}") for t in self.terminals]
-        if isinstance(answer, (list, tuple)):
-            if len(answer) != len(ws):
-                raise Unreadable(f"give {len(ws)} coefficients, one per terminal {', '.join(map(str, self.terminals))}")
-            coeffs = [read(c, names=True).value for c in answer]
-        else:
-            expr = sympy.expand(read(answer, names=True).value)
-            expr = expr.xreplace({s: sympy.Symbol(s.name) for s in expr.free_symbols})
-            coeffs = [expr.coeff(w) for w in ws]
-            if sympy.expand(expr - sum(a * w for a, w in zip(coeffs, ws))) != 0:
-                return Verdict(False, "Write the constraint as " + self.form)
-        names = {s.name for c in coeffs for s in sympy.sympify(c).free_symbols}
+        coeffs = self._coefficients(answer)
+        if isinstance(coeffs, str):
+            return Verdict(False, coeffs)
+        names = {s.name for c in coeffs for s in c.free_symbols}
         if any(n.startswith("omega_") for n in names):
             return Verdict(False, "The coefficients depend only on gear ratios, not on speeds")
         extra = sorted(names - set(self.ratios))
-        if extra:
+        if extra and self.name_extra:
             return Verdict(False, f"Your answer uses {', '.join(extra)}, which this chain does not have")
-        if all(sympy.sympify(c) == 0 for c in coeffs):
+        if extra:
+            return Verdict(False, "Your answer uses a ratio this chain does not have: each e_a_b must name the gear "
+                           "pair (a, b) of one of its fundamental circuits")
+        if all(equivalent(c, 0) for c in coeffs):
             return Verdict(False, "Every coefficient is zero: that is no constraint")
-        if proportional(coeffs, reference):
+        ref = [sympy.diff(reference, w) for w in self.omegas]
+        if proportional(coeffs, ref):
             return Verdict(True, "Well done: any non-zero multiple of the constraint is the same constraint", 1.0)
         for i in range(len(coeffs)):
             flipped = [-c if j == i else c for j, c in enumerate(coeffs)]
-            if proportional(flipped, reference):
+            if proportional(flipped, ref):
                 return Verdict(False, "One coefficient has the wrong sign: each circuit row reads "
                                "omega_b - e omega_a + (e - 1) omega_c = 0 with the ratio e = e_a_b")
-        return Verdict(False, "Set the ground's speed to zero in the four circuit equations, then eliminate the "
-                       "non-terminal speeds one at a time (a speed that appears in one equation only just defines "
-                       "that link's speed)")
+        return Verdict(False, self.generic)
+
+
+def _as_e(expr):
+    """*expr* with plain symbols, CYL's ``gamma_a_b`` renamed ``e_a_b``."""
+    return expr.xreplace({s: sympy.Symbol(re.sub(r"^gamma_", "e_", s.name)) for s in expr.free_symbols})
 
 
 _T2 = (3, 4, 6)
@@ -119,7 +146,9 @@ _T2 = (3, 4, 6)
              "circuit equations by hand (gl.willis_equations(chain) confirms them), eliminate the other speeds and "
              "give the constraint a1*omega_3 + a2*omega_4 + a3*omega_6 (leave out '= 0') in the ratios e_1_4, "
              "e_2_5, e_3_7, e_6_7. Any non-zero multiple is right.",
-    answer=_Constraint(_T2, ("e_1_4", "e_2_5", "e_3_7", "e_6_7")),
+    answer=Constraint(_T2, ("e_1_4", "e_2_5", "e_3_7", "e_6_7"), generic="Set the ground's speed to zero in the four "
+                      "circuit equations, then eliminate the non-terminal speeds one at a time (a speed that appears "
+                      "in one equation only just defines that link's speed)"),
 )
 def synth_constraint():
     from ..synthesis.dgm import terminal_constraint
@@ -196,3 +225,43 @@ def synth_two_constraints():
 
     two = [c for c in identify(_chain()).candidates if c.count == 2]
     return {"ground": two[0].ground, "terminals": two[0].terminals, "reason": "A"}
+
+
+# ----------------------------------------------------------------------------- 6.6
+_MORE = Choice(["none", "1 to 3", "4 to 9", "10 or more"], synonyms={
+    "none": ["0", "zero", "no more"], "10 or more": ["ten or more", "10+", "more than 9"]})
+
+
+@functools.lru_cache(maxsize=1)
+def _six_counts():
+    from ..synthesis import atlas
+
+    return {(frac, level): len(atlas.geared_chains(6, 2, fractionated=frac, level=level))
+            for frac in (False, True, "only") for level in ("coaxial", "kinematic")}
+
+
+@register(
+    "synth_fractionated_six", exercise="6.6", title="Predict, then count: the chains the atlas leaves out",
+    stars=1, minutes=10, kind="predict",
+    question="The atlas of two-dof six-link chains that CYL use (Tsai and Lin) has two rotation graphs, because "
+             "it leaves out the fractionated chains. First predict how many rotation graphs the fractionated "
+             "two-dof six-link chains add ('none', '1 to 3', '4 to 9' or '10 or more') and record it; then count "
+             "them with gl.atlas.geared_chains (fractionated='only', level='kinematic').",
+    answer=Value("count", mistakes=[
+        Mistake(lambda e, p: _six_counts()[(True, "kinematic")], "That counts the non-fractionated rotation graphs "
+                "too: the question asks how many the fractionated ones add."),
+        Mistake(lambda e, p: _six_counts()[("only", "coaxial")], "That counts displacement graphs (chains that "
+                "differ only in which links are coaxial count apart): count rotation graphs, level='kinematic'."),
+        Mistake(lambda e, p: _six_counts()[(True, "coaxial")], "That counts every displacement graph, "
+                "non-fractionated ones included: count the fractionated rotation graphs only."),
+    ], generic="Count the rotation graphs (level='kinematic') of the fractionated chains only "
+               "(fractionated='only') with six links and two degrees of freedom."),
+    predict=Prediction(_MORE, lambda ref, p: ("none" if ref == 0 else "1 to 3" if ref <= 3 else "4 to 9" if ref <= 9
+                                              else "10 or more"),
+                       "Most small two-dof chains are fractionated: two one-dof chains (such as a planetary and a "
+                       "gear pair on a carrier) that share a link. Chen and Yao (2000) had already synthesised the "
+                       "fractionated differentials by splitting them into two such parts; CYL search the "
+                       "non-fractionated chains, where that split does not exist."),
+)
+def synth_fractionated_six():
+    return _six_counts()[("only", "kinematic")]

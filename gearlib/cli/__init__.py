@@ -3,9 +3,10 @@
 The commands live beside the methods they run, one module per subpackage of gearlib
 (:mod:`.mechanism`: ``speeds``, ``ratio``, ``dof``; :mod:`.units`; :mod:`.gains`;
 :mod:`.adjacency`: ``frequencies``; :mod:`.davies`: ``efficiency``; :mod:`.synthesis`: ``dgm``
-and ``atlas``; and :mod:`.catalog`), each listing its ``COMMANDS``; a chapter adds a command to its
-module's list. FILE is a YAML or JSON mechanism file, or the name of a catalogue entry
-(``python -m gearlib catalog`` lists them). Errors in the input print one line and exit
+and ``atlas``; :mod:`.linkages`: ``linkage``; and :mod:`.catalog`), each listing its
+``COMMANDS``; a chapter adds a command to its module's list. FILE is a YAML or JSON mechanism
+file, or the name of a catalogue entry (``python -m gearlib catalog`` lists them; the
+``linkage`` command reads linkage files and :func:`gearlib.linkages.names`). Errors in the input print one line and exit
 with status 2; warnings (a planetary set that cannot be assembled) print one line each and
 the command goes on; ``--json`` prints machine-readable output, valid JSON on every path
 (errors included, as ``{"error": ...}``). On a terminal or file whose encoding cannot show
@@ -29,10 +30,10 @@ __all__ = ["main", "load_mechanism", "parse_link_values", "print_json", "build_p
 
 
 def _commands() -> dict:
-    from . import adjacency, catalog, davies, gains, mechanism, synthesis, units
+    from . import adjacency, catalog, davies, gains, linkages, mechanism, synthesis, units
 
     found = {}
-    for mod in (catalog, mechanism, units, gains, adjacency, davies, synthesis):
+    for mod in (catalog, mechanism, units, gains, adjacency, davies, synthesis, linkages):
         for command in mod.COMMANDS:
             found[command.name] = command
     return dict(sorted(found.items()))

@@ -38,7 +38,7 @@ EXPORTS = {
     "overall": ("efficiency", "Efficiency", "MeshResult", "GLOVER", "eta_symbol"),
     "operating": ("operating_point", "OperatingPoint", "PortResult", "MeshLoss"),
     "formulas": ("TurningCondition", "turning_conditions", "FormulaCase", "efficiency_formulas",
-                "derivative_check"),
+                "derivative_check", "by_gears"),
     "conventional": ("torque_balance_efficiency", "TorqueBalance"),
     "identify": ("LossFit", "efficiencies_from_losses"),
     "friction": ("involute_efficiency", "buckingham_efficiency", "contact_path", "equivalent_zeta",

@@ -52,7 +52,8 @@ def draw_coupling_graph(net, ax=None, *, pos=None, font_size=10, node_size=420):
             s = 0.05 * norm
             ax.plot([cx - nx_ * s, cx + nx_ * s], [cy - ny_ * s, cy + ny_ * s], color=color, lw=2.2, zorder=2)
         label = c.name + (" (in)" if c.role == "input" else " (out)" if c.role == "output" else "")
-        ax.text(cx + nx_ * 0.09 * norm, cy + ny_ * 0.09 * norm, label, fontsize=font_size - 1, ha="center",
+        away = 0.15 if c.kind == "mesh" else 0.09  # clear of the stroke across a mesh
+        ax.text(cx + nx_ * away * norm, cy + ny_ * away * norm, label, fontsize=font_size - 1, ha="center",
                 va="center", color=color, zorder=3)
     for link in mech.link_ids:
         x, y = pos[link]
@@ -65,9 +66,15 @@ def draw_coupling_graph(net, ax=None, *, pos=None, font_size=10, node_size=420):
     return ax
 
 
-def plot_layout(lay, ax=None, *, font_size=9):
+def plot_layout(lay, ax=None, *, font_size=9, title=None, legend: bool = True):
     """The axis lines (labelled with their links) and pitch points of a
-    :class:`~gearlib.davies.Layout` (or of a network's layout) in the plane ``x = 0``."""
+    :class:`~gearlib.davies.Layout` (or of a network's layout) in the plane ``x = 0``: a side
+    view of the train, every axis in the drawing plane. Grey lines are the axes, an arrow
+    each axis's positive direction of rotation; red dots the pitch points, labelled with their
+    gears; dotted red lines (bevel gears) the pitch lines from the cone apex to the pitch point.
+    A legend says so unless ``legend=False``."""
+    from matplotlib.lines import Line2D
+
     lay = getattr(lay, "layout", lay)
     ax = _axes(ax, (5.0, 4.0))
     pts = [tuple(map(float, m.pitch_point)) for m in lay.meshes] + [tuple(map(float, a.point)) for a in lay.axes]
@@ -81,13 +88,16 @@ def plot_layout(lay, ax=None, *, font_size=9):
         ax.annotate("", xy=(py + 0.25 * span * dy, pz + 0.25 * span * dz), xytext=(py, pz),
                     arrowprops={"arrowstyle": "-|>", "color": "black"})
         tip = 0.3 + 0.15 * k  # stagger the labels of neighbouring axes
-        ax.text(py + tip * span * dy, pz + tip * span * dz, f" {a.label}: {', '.join(map(str, sorted(a.links, key=str)))}",
+        links = ", ".join(map(str, sorted(a.links, key=str)))
+        ax.text(py + tip * span * dy, pz + tip * span * dz, f" axis {a.label}: links {links}",
                 fontsize=font_size, color="0.2", ha="left", va="center")
+    bevel = False
     for m in lay.meshes:
         y, z = map(float, m.pitch_point)
         ax.plot([y], [z], "o", color="tab:red", zorder=3)
         ax.text(y, z, f"  {m.gears[0]}-{m.gears[1]}", fontsize=font_size, color="tab:red", va="bottom")
         if m.apex is not None:
+            bevel = True
             ay, az = map(float, m.apex)
             ax.plot([ay, y], [az, z], color="tab:red", lw=0.8, ls=":", zorder=2)
     ax.set_xlabel("y")
@@ -95,6 +105,14 @@ def plot_layout(lay, ax=None, *, font_size=9):
     ax.set_aspect("equal")
     ax.set_xlim(-span, span)
     ax.set_ylim(-span, span)
+    if legend:
+        handles = [Line2D([], [], color="0.5", lw=1, label="axis (arrow: positive rotation)"),
+                   Line2D([], [], color="tab:red", marker="o", ls="none", label="pitch point of a mesh")]
+        if bevel:
+            handles.append(Line2D([], [], color="tab:red", lw=0.8, ls=":", label="pitch line (from the apex)"))
+        ax.legend(handles=handles, fontsize=font_size - 1, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                  frameon=False)
+    ax.set_title("side view in the plane x = 0" if title is None else title, fontsize=font_size + 1)
     return ax
 
 
@@ -124,6 +142,14 @@ def plot_coupling_powers(result, ax=None):
     return ax
 
 
+def _what(c) -> str:
+    """A coupling in a few characters under its letter: ``mesh 1-3``, ``5-1 in``, ``3-5``."""
+    if c.kind == "mesh":
+        return f"mesh {c.mesh.gears[0]}-{c.mesh.gears[1]}"
+    role = {"input": " in", "output": " out"}.get(c.role, "")
+    return f"{c.tail}-{c.head}{role}"
+
+
 def plot_power_flow(result, ax=None, *, lossless: bool = True, title=True):
     """Power flow through every coupling of an :class:`~gearlib.davies.Efficiency`, per unit
     input power: seen from the ground (real flow) and, for meshes, from their carrier (virtual
@@ -143,17 +169,17 @@ def plot_power_flow(result, ax=None, *, lossless: bool = True, title=True):
             virtual.append(max(abs(float(vt)), abs(float(vh))) / p_in)
         else:
             virtual.append(0.0)
-        names.append(c.name + ("*" if c.kind == "mesh" else ""))
+        names.append(f"{c.name}\n{_what(c)}")
     x = list(range(len(names)))
     ax.bar([i - 0.2 for i in x], real, width=0.4, label="seen from the ground (real)", color="tab:blue")
     ax.bar([i + 0.2 for i in x], virtual, width=0.4, label="seen from the carrier (virtual)", color="tab:orange")
     ax.axhline(1.0, color="black", ls="--", lw=0.8)
-    ax.set_xticks(x, names)
+    ax.set_xticks(x, names, fontsize=8)
     ax.set_ylabel("|power flow| / input power")
     ax.legend(fontsize=8, frameon=False)
     if title:
         peak = max(virtual) if virtual else 0.0
         kind = "lossless" if lossless else "with losses"
-        ax.set_title(f"η = {float(result.value):.4g}; largest virtual flow {peak:.3g} × input ({kind}; * = mesh)",
+        ax.set_title(f"η = {float(result.value):.4g}; largest virtual flow {peak:.3g} × input ({kind})",
                      fontsize=9)
     return ax

@@ -1,9 +1,9 @@
 """Laus's own models, for reproducing the thesis and its errata.
 
 :func:`laus_humpage_geometry` returns the axis and pitch-point overrides of Laus's Humpage
-model (thesis eqs. 80 and 138-141; digest D5): the pitch points C, D, E of eq. (138) and the
-planet axis either as printed in eq. (80) -- inconsistent with the pitch cones, the cautionary
-case -- or along the bisector of OC and OD, which is what the rest of the geometry implies.
+model (thesis eqs. 80 and 138-141; the book's :ref:`notes on the sources <sources-humpage>`):
+the pitch points C, D, E of eq. (138) and the planet axis either as printed in eq. (80) --
+inconsistent with the pitch cones, the cautionary case -- or along the bisector of OC and OD, which is what the rest of the geometry implies.
 Pass them to :func:`gearlib.davies.efficiency` (``check=False`` for the printed axis, whose
 carrier speed contradicts the Willis equations).
 

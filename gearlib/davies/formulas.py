@@ -35,7 +35,30 @@ from .power import mesh_flows
 from .statics import actions as solve_actions
 from ..mechanism._accept import takes_mechanism
 
-__all__ = ["TurningCondition", "turning_conditions", "FormulaCase", "efficiency_formulas", "derivative_check"]
+__all__ = ["TurningCondition", "turning_conditions", "FormulaCase", "efficiency_formulas", "derivative_check",
+           "by_gears"]
+
+
+def by_gears(expr, gears: dict):
+    """*expr* with its ordinary efficiencies named by gears instead of links.
+
+    The library names the efficiency of a mesh by the links that carry its gears: ``eta_3_2``
+    is the mesh of links 3 and 2 with link 3 driving. When a link carries two gears (a
+    compound planet) a book or a paper names them apart. *gears* maps a mesh's links
+    ``(a, b)`` to the names of its gears ``(g_a, g_b)``; ``eta_a_b`` becomes ``eta_<g_a><g_b>``
+    and ``eta_b_a`` becomes ``eta_<g_b><g_a>`` (both ways round). Meshes not listed keep
+    their names.
+
+    >>> import sympy
+    >>> e = sympy.Symbol("eta_3_2", positive=True) * sympy.Symbol("eta_1_3", positive=True)
+    >>> by_gears(e, {(2, 3): (2, 4), (1, 3): (1, 3)})    # link 3 carries gears 3 and 4
+    eta_13*eta_42
+    """
+    subs = {}
+    for (a, b), (ga, gb) in gears.items():
+        for (x, y), (gx, gy) in (((a, b), (ga, gb)), ((b, a), (gb, ga))):
+            subs[sympy.Symbol(f"eta_{x}_{y}", positive=True)] = sympy.Symbol(f"eta_{gx}{gy}", positive=True)
+    return sympy.sympify(expr).xreplace(subs)
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,7 @@
 * :func:`involute_efficiency` averages the instantaneous efficiency of an involute spur pair
   over the path of contact (Laus 2011, appendix A, eq. 136); :func:`buckingham_efficiency` is
   Buckingham's "more exact" formula for comparison, and :func:`equivalent_zeta` the Coulomb
-  coefficient of the equivalent average friction torque (App. A.5, with the digest's repair).
+  coefficient of the equivalent average friction torque (App. A.5, with the book's repair of its final formula).
 * :func:`bearing_multiplier` scales a Coulomb coefficient for a cylindrical journal
   (Table 16, after Baranov) and :func:`pivot_friction_torque` gives the friction torque of an
   annular pivot (eqs. 142-146, with the standard uniform-wear law).

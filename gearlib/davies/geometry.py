@@ -235,7 +235,8 @@ def layout(mech: Mechanism, *, mode: str = "auto", exact: bool = True, radii=Non
         if mode != "auto":
             raise
         notes.append(f"{err}; the loop is left open (mode 'kinematic'): speeds, power flows and the efficiency "
-                     "are unaffected, forces are not to scale")
+                     "are unaffected, forces are not to scale. If the train should close (a planetary set), "
+                     "check the data: a ring gear needs `type: internal` in its gear pair")
         geo = Builder(mech, groups, pairs, "kinematic" if want == "physical" else want, exact).run()
         want = "kinematic"
     relations, values = {}, {}

@@ -10,7 +10,7 @@ the sum of the coupling motions along any path between them (Laus's inspection m
 An independent check compares every turning pair's speed with the Willis equations
 (:func:`gearlib.speeds`): Davies' equations alone accept a wrongly oriented axis, because
 with all axes through one point the circuit equations keep their rank whatever the axis
-directions (Laus's Humpage example, digest D5.6).
+directions (Laus's Humpage example; the book's :ref:`notes on the sources <sources-humpage>`).
 
 >>> import gearlib as gl
 >>> net = gl.davies.network(gl.catalog.load("laus_epicyclic"), ground=1, input=5, output=2)

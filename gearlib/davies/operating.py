@@ -125,14 +125,21 @@ class OperatingPoint:
     __repr__ = __str__
 
     def _repr_html_(self) -> str:
-        rows = "".join(f"<tr><td>{p.link}</td><td>{p.speed:.6g}</td><td>{p.torque:.6g}</td><td>{p.power:.6g}</td>"
-                       f"<td>{p.given}</td></tr>" for p in self.ports)
-        mrows = "".join(f"<tr><td>{m.gears}</td><td>{m.driver} → {m.driven}</td><td>{m.eta:.6g}</td>"
-                        f"<td>{m.rolling:.6g}</td><td>{m.loss:.6g}</td></tr>" for m in self.meshes)
+        from .._common.matview import PAD
+
+        def row(cells):
+            return "<tr>" + "".join(f"<td style='{PAD}; text-align: center'>{c}</td>" for c in cells) + "</tr>"
+
+        def head(names):
+            return "<tr>" + "".join(f"<th style='{PAD}'>{n}</th>" for n in names) + "</tr>"
+
+        rows = "".join(row((p.link, f"{p.speed:.6g}", f"{p.torque:.6g}", f"{p.power:.6g}", p.given))
+                       for p in self.ports)
+        mrows = "".join(row((m.gears, f"{m.driver} → {m.driven}", f"{m.eta:.6g}", f"{m.rolling:.6g}",
+                             f"{m.loss:.6g}")) for m in self.meshes)
         return (f"<p><b>η = {self.efficiency:.6g}</b> ({self.output_power:.6g} out of {self.input_power:.6g} in)</p>"
-                "<table><tr><th>port</th><th>speed</th><th>torque</th><th>power</th><th>given</th></tr>"
-                f"{rows}</table><table><tr><th>mesh</th><th>driver → driven</th><th>η_ij</th>"
-                f"<th>rolling power</th><th>loss</th></tr>{mrows}</table>")
+                f"<table>{head(('port', 'speed', 'torque', 'power', 'given'))}{rows}</table>"
+                f"<table>{head(('mesh', 'driver → driven', 'ordinary η', 'rolling power', 'loss'))}{mrows}</table>")
 
 
 def _values(mech, spec, what) -> dict:

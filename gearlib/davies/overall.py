@@ -26,6 +26,7 @@ Numbers by default; ``symbolic=True`` keeps the ordinary efficiencies (and, with
 
 from __future__ import annotations
 
+import html
 import json
 from dataclasses import dataclass, field
 
@@ -106,9 +107,10 @@ class Efficiency:
         """Rows ``(coupling, gears, carrier, driver -> driven, eta_ij, zeta, virtual power, loss)``."""
         def fmt(x):
             try:
-                return f"{float(x):.{digits}g}"
+                v = float(x)
             except TypeError:
                 return str(x)
+            return "0" if abs(v) < 1e-12 else f"{v:.{digits}g}"  # rounding noise of an unloaded mesh
         return [(m.coupling, m.gears, m.carrier, "does not roll" if m.driver is None else f"{m.driver} -> {m.driven}",
                  fmt(m.eta), fmt(m.zeta),
                  fmt(m.virtual_power), fmt(m.loss)) for m in self.meshes]
@@ -127,13 +129,38 @@ class Efficiency:
     __repr__ = __str__
 
     def _repr_html_(self) -> str:
-        rows = "".join("<tr>" + "".join(f"<td>{x}</td>" for x in row) + "</tr>" for row in self.table())
-        head = "".join(f"<th>{h}</th>" for h in ("mesh", "gears", "carrier", "driver → driven", "η_ij", "ζ",
-                                                  "virtual power", "loss"))
-        notes = "".join(f"<p><i>{n}</i></p>" for n in self.notes)
+        from .._common.matview import PAD
+
+        try:
+            p_in = float(self.input_power)
+        except TypeError:
+            p_in = None
+
+        def per_input(x):
+            try:
+                v = float(x) / p_in
+            except (TypeError, ZeroDivisionError):
+                return html.escape(str(x))
+            return "0" if abs(v) < 1e-12 else f"{v:.6g}"
+
+        def cells(m, row):
+            c, g, k, d, e, z, v, _ = row
+            return (c, str(g), str(k), d.replace("->", "→"), e, z, v, per_input(m.loss) if m.loss is not None else "")
+
+        rows = "".join("<tr>" + "".join(f"<td style='{PAD}; text-align: center; white-space: nowrap'>{x}</td>"
+                                        for x in cells(m, row)) + "</tr>"
+                       for m, row in zip(self.meshes, self.table()))
+        head = "".join(f"<th style='{PAD}'>{h}</th>" for h in (
+            "mesh", "gears", "carrier", "driver → driven", "ordinary η", "ζ (signed)", "virtual power", "loss"))
+        key = ("<p style='font-size: 0.85em'>Per mesh: the ordinary efficiency used (the driver's gear "
+               "drives, the carrier held); ζ, the signed Coulomb coefficient of the friction torque "
+               "T = ζU (a length, in the unit of the radii; its sign follows the coupling's direction); the "
+               "virtual power, the lossless power through the mesh seen from its carrier, and the loss, "
+               "both per unit input power.</p>")
+        notes = "".join(f"<p><i>{html.escape(n)}</i></p>" for n in self.notes)
         return (f"<p><b>η = {_fmt(self.value)}</b> (input {self.network.input}, output {self.network.output}, "
                 f"ground {self.network.ground}; speed ratio {_fmt(self.ratio)})</p>"
-                f"<table><tr>{head}</tr>{rows}</table>{notes}")
+                f"<table><tr>{head}</tr>{rows}</table>{key}{notes}")
 
     def to_json(self) -> dict:
         def num(x):

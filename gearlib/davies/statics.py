@@ -39,7 +39,7 @@ VISCOUS_LAWS = ("linear", "quadratic", "cubic", "printed")
 
 
 def viscous_torque(b, speed, law: str = "linear"):
-    """A dissipative viscous torque: ``-b t``, ``-b t |t|`` or ``-b t^3`` (the digest's repair of
+    """A dissipative viscous torque: ``-b t``, ``-b t |t|`` or ``-b t^3`` (the book's repair of
     Laus's Table 2: every form must oppose the motion for both signs of ``t``). The law
     ``"printed"`` is Laus's eq. (50) as printed, ``-b t sign(t) = -b |t|``: it *injects* power
     whenever ``t < 0`` and is kept only to show that error.

@@ -39,10 +39,18 @@ def with_teeth(mech: Mechanism, pair, gear, teeth: int) -> Mechanism:
 
 class EfficiencyExplorer(Explorer):
     """Sliders for tooth numbers and ordinary efficiencies; shows the power flows
-    (:func:`gearlib.davies.plot_power_flow`) and the overall efficiency."""
+    (:func:`gearlib.davies.plot_power_flow`) and the overall efficiency.
 
-    def __init__(self, mech: Mechanism, ground, input, output, *, pairs=None, eta=0.98, max_teeth: int = 120):
+    Slider labels name gears: ``N_1`` for the teeth of the gear on link 1 and ``η 1-3`` for the
+    ordinary efficiency of the mesh of gears 1 and 3 (either gear driving). *gears* renames
+    the gears of a mesh as :func:`gearlib.davies.by_gears` does (``{(2, 3): (2, 4)}``: in the
+    mesh of links 2 and 3, link 3's gear is gear 4); a link with gears in two meshes and no
+    such names gets the mesh in its label (``N_3 (1-3)``, ``N_3 (2-3)``)."""
+
+    def __init__(self, mech: Mechanism, ground, input, output, *, pairs=None, eta=0.98, max_teeth: int = 120,
+                 gears=None):
         self.mechanism = mech
+        self.gears = {tuple(mech.resolve(x) for x in k): tuple(v) for k, v in (gears or {}).items()}
         self.ground, self.input, self.output = ground, input, output
         chosen = mech.gear_pairs if pairs is None else [mech.gear_pair(*p)[0] for p in pairs]
         self.pairs = [gp for gp in chosen if gp.teeth is not None]
@@ -92,25 +100,46 @@ class EfficiencyExplorer(Explorer):
         self._show()
         return self.image
 
+    def gear_name(self, pair, link) -> str:
+        """The name of the gear on *link* in the mesh *pair* (its link id unless renamed)."""
+        for (a, b), (ga, gb) in self.gears.items():
+            if {a, b} == set(pair):
+                return str(ga if link == a else gb)
+        return str(link)
+
+    def labels(self) -> dict:
+        """``{slider key: label}``: ``N_<gear>`` and ``η <gear>-<gear>``, every label different."""
+        teeth = [(f"N_{g}_in_{gp.gears[0]}_{gp.gears[1]}", f"N_{self.gear_name(gp.gears, g)}", gp.gears)
+                 for gp in self.pairs for g in gp.gears]
+        names = [label for _, label, _ in teeth]
+        # one link's gears in two meshes and not renamed: say which mesh
+        out = {key: label + (f" ({a}-{b})" if names.count(label) > 1 else "") for key, label, (a, b) in teeth}
+        for a, b in self.eta:
+            out[f"eta_{a}_{b}"] = f"η {self.gear_name((a, b), a)}-{self.gear_name((a, b), b)}"
+        return out
+
     def controls(self, w) -> list:
         sliders = {}
+        labels = self.labels()
+        style = {"description_width": "initial"}
         for key, value in self.current().items():
             if key.startswith("N_"):
-                sliders[key] = w.IntSlider(value=value, min=5, max=self.max_teeth, description=key.split("_in_")[0],
-                                           continuous_update=False)
+                sliders[key] = w.IntSlider(value=value, min=5, max=self.max_teeth, description=labels[key],
+                                           continuous_update=False, style=style)
             else:
-                sliders[key] = w.FloatSlider(value=value, min=0.9, max=1.0, step=0.001, description=key,
-                                             continuous_update=False, readout_format=".3f")
+                sliders[key] = w.FloatSlider(value=value, min=0.9, max=1.0, step=0.001, description=labels[key],
+                                             continuous_update=False, readout_format=".3f", style=style)
         return self._slider_rows(w, sliders)
 
 
 @takes_mechanism
 def efficiency_explorer(mech: Mechanism, ground, input, output, *, pairs=None, eta=0.98,
-                        max_teeth: int = 120) -> EfficiencyExplorer:
+                        max_teeth: int = 120, gears=None) -> EfficiencyExplorer:
     """A widget: sliders for the tooth numbers of *pairs* (default all) and the ordinary
-    efficiency of every mesh; shows the overall efficiency and the power flows. Static twin:
+    efficiency of every mesh; shows the overall efficiency and the power flows. *gears* names
+    the gears of a compound link (see :class:`EfficiencyExplorer`). Static twin:
     :func:`gearlib.davies.plot_efficiency_sweep`."""
-    return EfficiencyExplorer(mech, ground, input, output, pairs=pairs, eta=eta, max_teeth=max_teeth)
+    return EfficiencyExplorer(mech, ground, input, output, pairs=pairs, eta=eta, max_teeth=max_teeth, gears=gears)
 
 
 @takes_mechanism

@@ -17,7 +17,9 @@ __all__ = ['draw_propagation', 'plot_shift_table', 'plot_gear_efficiency', 'plot
 def draw_propagation(prop, ax=None, *, title=None, font_size=9):
     """The propagation structure from inputs to output: input nodes, units (with their type)
     and the output, arrows labelled with the local input they pass (a
-    :class:`~gearlib.Propagation` or a :class:`~gearlib.gains.Plan`)."""
+    :class:`~gearlib.Propagation` or a :class:`~gearlib.gains.Plan`). An output that a coaxial
+    triangle receives reversed is labelled with its minus sign (``-theta_5,4`` in Liu and
+    Chen's Fig. 3(a))."""
     import networkx as nx
 
     plan_ = getattr(prop, "plan", prop)
@@ -49,8 +51,8 @@ def draw_propagation(prop, ax=None, *, title=None, font_size=9):
         ax.add_patch(FancyArrowPatch(pos[u], pos[v], arrowstyle="-|>", mutation_scale=12, shrinkA=half_width(u),
                                      shrinkB=half_width(v), color=color, linewidth=1.3, zorder=1))
         (x0, y0), (x1, y1) = pos[u], pos[v]
-        ax.text((x0 + x1) / 2, (y0 + y1) / 2 + 0.18, _tex(d.get("signal", "")), fontsize=font_size - 1,
-                ha="center", color=color)
+        ax.text((x0 + x1) / 2, (y0 + y1) / 2 + 0.18, _tex(d.get("signal", ""), d.get("sign", 1)),
+                fontsize=font_size - 1, ha="center", color=color)
     for n, d in g.nodes(data=True):
         kind = d.get("kind")
         if kind == "unit":
@@ -63,10 +65,11 @@ def draw_propagation(prop, ax=None, *, title=None, font_size=9):
     return _finish(ax, pos or {"_": (0, 0)}, title)
 
 
-def _tex(name: str) -> str:
+def _tex(name: str, sign: int = 1) -> str:
+    """``theta_5,4`` as TeX; with ``sign`` -1, the reversed output of a coaxial triangle, ``-theta_5,4``."""
     if name.startswith("theta_"):
-        return rf"$\theta_{{{name[6:]}}}$"
-    return name
+        return rf"${'-' if sign < 0 else ''}\theta_{{{name[6:]}}}$"
+    return ("-" if sign < 0 else "") + name
 
 
 def plot_shift_table(table, ax=None, *, title=None, font_size=8):

@@ -71,6 +71,8 @@ def lever_geometry(levers, state=None) -> dict:
                             abs(ab[0][1] - ab[1][1]), default=()))
         elements.append((e.name, e.kind, e.links, e.name in engaged, pts))
     braked = {e.links[0] for e in mech.shift_elements if e.kind == "brake" and e.name in engaged}
+    if state is None and mech.ground is not None:   # the housing is held in every state
+        held = {mech.ground}
     for link in sorted(held - braked, key=str):   # held in this state (the ground, a held link)
         if link in where:
             elements.append(("", "brake", (link,), True, tuple(where[link])))

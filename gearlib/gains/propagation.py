@@ -114,7 +114,9 @@ class Plan:
         """The propagation structure as a networkx DiGraph: input nodes ``theta_u,v``, unit nodes
         ``KU<i>`` and the output node, from inputs to output. Edges carry ``signal`` (the local
         input they pass) and ``kind`` (``"input"``, ``"2-link chain"``, ``"coaxial triangle"``,
-        ``"tear"``, ``"output"``)."""
+        ``"tear"``, ``"output"``); a coaxial triangle's edges also carry ``sign``, -1 where the
+        receiving unit takes the feeding unit's output reversed (``theta_2,5 = theta_2,4 - theta_5,4``,
+        eq. (10)) and +1 otherwise."""
         import networkx as nx
 
         g = nx.DiGraph()
@@ -136,7 +138,9 @@ class Plan:
                         g.add_edge(s.unit.name, t.unit.name, signal=theta(*t.input), kind="tear")
                     elif kind == "coaxial triangle":  # each feeding unit passes its own link (eq. 10)
                         z = next((z for z in s.input if self.known_by.get(z) == ("step", t.index)), s.input[0])
-                        g.add_edge(t.unit.name, s.unit.name, signal=theta(z, t.anchor), kind=kind)
+                        # theta_{x,w} = theta_{x,a} - theta_{w,a}: the feed of w arrives reversed
+                        sign = -1 if z == s.input[1] else 1
+                        g.add_edge(t.unit.name, s.unit.name, signal=theta(z, t.anchor), kind=kind, sign=sign)
                     else:
                         g.add_edge(t.unit.name, s.unit.name, signal=sig, kind=kind)
             for link in s.checks:

@@ -186,12 +186,13 @@ def shift_table(mech: Mechanism, modes=None, **options):
 
 
 @takes_mechanism
-def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, title=None):
+def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, title=None, concentric: bool = False):
     """Every mode's ratio as the tooth number of one gear varies: the static twin of
     :func:`gearlib.gains.transmission_explorer`. ``pair`` names a gear pair, ``gear``
     the gear of that pair whose tooth number takes each of ``values``. Tooth numbers with
     which a planetary set cannot be assembled (:func:`gearlib.assembly_conditions`) are drawn
-    as open markers."""
+    as open markers. With ``concentric=True`` the gear is a sun or a ring and its planets follow
+    it (:func:`gearlib.with_concentric_teeth`), so that every set stays concentric."""
     from ..mechanism.assembly import assembly_conditions
     from ..mechanism.plot import _axes
 
@@ -203,8 +204,13 @@ def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, titl
     curves = {m.name: [] for m in modes}
     fits = []
     for n in values:
-        teeth = (n, gp.teeth[1]) if gear == gp.gears[0] else (gp.teeth[0], n)
-        variant = mech.with_gear_pair(gp.gears, teeth=teeth)
+        if concentric:
+            from ..mechanism.assembly import with_concentric_teeth
+
+            variant = with_concentric_teeth(mech, {gear: n})
+        else:
+            teeth = (n, gp.teeth[1]) if gear == gp.gears[0] else (gp.teeth[0], n)
+            variant = mech.with_gear_pair(gp.gears, teeth=teeth)
         fits.append(all(c.ok for c in assembly_conditions(variant)))
         table = shift_table(variant, modes)
         for row in table.rows:
@@ -220,7 +226,7 @@ def plot_mode_sweep(mech: Mechanism, modes, *, pair, gear, values, ax=None, titl
                 label="does not assemble")
     ax.axvline(gp.teeth[gp.gears.index(gear)], color="0.6", linestyle=":", linewidth=1)
     ax.axhline(0, color="black", linewidth=0.8)
-    ax.set_xlabel(f"teeth of gear {gear} in pair {gp.label}")
+    ax.set_xlabel(f"teeth of gear {gear} in pair {gp.label}" + (" (its planets follow)" if concentric else ""))
     ax.set_ylabel("ratio output / input")
     ax.legend(fontsize=8)
     ax.set_title(title if title is not None else f"gears of {mech.name}", fontsize=10)

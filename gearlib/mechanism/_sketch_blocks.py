@@ -4,8 +4,11 @@ Private to :mod:`gearlib.mechanism.sketch`. A *unit* is a set of gears in mesh (
 a pair of gears on fixed axes) or, for bevel gears, the sets around one cone apex; units stand
 side by side along the main axis. Inside a spur unit the meshes fall into *planes* (axial
 slices): two gears share a plane unless they would overlap in the half section without being
-in mesh (two suns, two rings, a planet over a gear it does not mesh), so a Ravigneaux set has
-two planes and its long pinion spans both. A bevel unit is drawn about its cone apex: every
+in mesh (two suns, two rings, a planet over a gear it does not mesh). Two pinions in mesh (a
+double-pinion set) stand at different angles about the main axis, so the section cannot show
+them one above the other where their blocks would overlap: they are drawn side by side, in two
+planes with no gap between them (a Ravigneaux set: the small sun and the short pinion in one
+plane, the long pinion with the large sun and the ring in the next). A bevel unit is drawn about its cone apex: every
 gear is a frustum whose pitch cone passes through the apex.
 
 The drawing is a half section when the main axis holds a planetary (three or more links, or a
@@ -190,11 +193,25 @@ def _spur(parts, u, half, lower, meshing, width, gap, depth):
     gears = parts.gears
     planes: list[set] = []
     where: dict = {}
+    touch: set = set()   # pairs of planes side by side with no gap: two pinions in mesh
+
+    def pinions(j, k) -> bool:
+        """Two planets in mesh (a double-pinion set) whose blocks would overlap in one plane: they
+        stand at different angles about the main axis, so the section cannot show them one above
+        the other; they are drawn side by side, in two planes that touch."""
+        a, b = gears[j], gears[k]
+        return (frozenset((j, k)) in meshing and a.group != b.group and parts.axes[a.group].parent is not None
+                and parts.axes[b.group].parent is not None and j not in lower and k not in lower
+                and _overlap(_radial(parts, a, half), _radial(parts, b, half), 1e-6 * (a.radius + b.radius)))
 
     def fits(p, new):
         for k in new:
             for j in planes[p]:
-                if j == k or frozenset((j, k)) in meshing or j in lower or k in lower:
+                if j == k or j in lower or k in lower:
+                    continue
+                if frozenset((j, k)) in meshing:
+                    if pinions(j, k):
+                        return False
                     continue
                 if gears[j].link == gears[k].link or _overlap(_radial(parts, gears[j], half),
                                                               _radial(parts, gears[k], half)):
@@ -203,6 +220,22 @@ def _spur(parts, u, half, lower, meshing, width, gap, depth):
 
     for i in u.pairs:
         ga, gb = parts.pair_gears[i]
+        if pinions(ga, gb):
+            placed = [k for k in (ga, gb) if k in where]
+            first = placed[0] if placed else ga
+            if not placed:
+                planes.append({first})
+                where[first] = {len(planes) - 1}
+            other = gb if first == ga else ga
+            if other not in where:
+                p = next((q for q in range(len(planes)) if q not in where[first] and fits(q, {other})), None)
+                if p is None:
+                    planes.append(set())
+                    p = len(planes) - 1
+                planes[p].add(other)
+                where[other] = {p}
+            touch |= {frozenset((p, q)) for p in where[first] for q in where[other]}
+            continue
         for p in sorted(where.get(ga, set()) | where.get(gb, set())):
             new = {ga, gb} - planes[p]
             if fits(p, new):
@@ -213,20 +246,29 @@ def _spur(parts, u, half, lower, meshing, width, gap, depth):
             p = len(planes) - 1
         for k in (ga, gb):
             where.setdefault(k, set()).add(p)
-    # order the planes so that a gear's planes are neighbours (a chain through shared gears)
+    # order the planes so that a gear's planes are neighbours (a chain through shared gears), and
+    # planes whose pinions touch side by side
+    def near(q, last):
+        return len(planes[q] & planes[last]) + 2 * (frozenset((q, last)) in touch)
+
     order = [0]
     rest = set(range(1, len(planes)))
     while rest:
         last = order[-1]
-        nxt = max(sorted(rest), key=lambda q: len(planes[q] & planes[last]))
+        nxt = max(sorted(rest), key=lambda q: near(q, last))
         order.append(nxt)
         rest.remove(nxt)
-    pos = {p: k for k, p in enumerate(order)}
-    u.width = len(planes) * width + (len(planes) - 1) * gap
+    x, start = 0.0, {}
+    for n, p in enumerate(order):
+        if n:
+            x += 0.0 if frozenset((p, order[n - 1])) in touch else gap
+        start[p] = x
+        x += width
+    u.width = x
     for k in u.gears:
         g = gears[k]
-        ps = [pos[p] for p in where[k]]
-        x0, x1 = min(ps) * (width + gap), max(ps) * (width + gap) + width
+        x0 = min(start[p] for p in where[k])
+        x1 = max(start[p] for p in where[k]) + width
         a = parts.axes[g.group]
         if half and a.parent is None:
             d = min(depth, 0.45 * g.radius) if not g.ring else depth

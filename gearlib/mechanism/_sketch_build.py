@@ -118,9 +118,7 @@ class _Builder(Emitter):
                     us = self.axis_units[a_id]
                     at = {"out": (None, a.offset)} if kind == "toframe" else {"in": (None, a.offset),
                                                                               "out": (None, a.offset)}
-                    lanes = (min(us), max(us) + 1)
-                    ports.append(Port(m, kind, at, lanes=lanes, axis=a_id,
-                                      extra={lane: self._pin_cost(a_id, us, lane == lanes[0]) for lane in lanes}))
+                    ports.append(Port(m, kind, at, lanes=(min(us), max(us) + 1), axis=a_id))
                 self.member_units.setdefault(m, set()).update(self.axis_units.get(a_id, []))
         for a_id, a in parts.axes.items():   # arms of carriers that turn off the main axis
             if a.parent is not None and a.parent not in root_links and a.parent != self.ground:
@@ -166,35 +164,45 @@ class _Builder(Emitter):
                  and not self.axis_units.get(a.group)]
         outer = max(tops, default=self.S) + 0.6 * self.step
         widths = [u.width for u in self.g.units]
+        placed = []
+        for u in self.g.units:
+            for k, poly, _ in u.blocks:
+                xs_, ys_ = [q[0] for q in poly], [q[1] for q in poly]
+                placed.append((u.index, min(xs_), max(xs_), min(ys_), max(ys_), self.p.gears[k].group))
+        self.behind = self._partners()
+        flippable = [u.index for u in self.g.units if u.kind == "spur" and self.half
+                     and any(b[1] > 1e-9 or b[2] < u.width - 1e-9 for b in placed if b[0] == u.index)]
         self.router = Router(ports, widths, members, self.pitch, inner_top, outer, self.step, ends, nested,
-                             self.ground if self.ground in self.routed else None)
+                             self.ground if self.ground in self.routed else None, placed, self.behind, flippable,
+                             self._blocks_of(self.ground) if self.ground in self.routed else ())
         self.route = self.router.solve()
+        for u in self.g.units:   # units drawn mirrored: their planes in the other order
+            if u.index in self.route.flipped:
+                u.blocks = [(k, tuple((u.width - x, y) for x, y in poly), m) for k, poly, m in u.blocks]
         drums = [y for (m, z), y in self.route.levels.items() if z == "out"]
         has_brakes = any(p.kind == "brake" for p in ports)
         self.top = max(drums + [outer]) + self.step * (2.6 if has_brakes else 1.2)
 
-    def _pin_cost(self, axis, units, left) -> int:
-        """How many other gears a pin from the lane on that side to its planet would pass through."""
-        y = self.p.axes[axis].offset
-        partners = {o for g in self.p.gears if g.group == axis for _, o in g.meshes}
-        count = 0
+    def _blocks_of(self, link) -> list:
+        """(unit, x0, x1) of every gear block of *link*, in unit coordinates."""
+        out = []
         for u in self.g.units:
-            if u.index not in units:
-                continue
-            mine = [q[0] for k, poly, _ in u.blocks if self.p.gears[k].group == axis for q in poly]
-            if not mine:
-                continue
-            lo, hi = (0.0, max(mine)) if left else (min(mine), u.width)
-            if u.index not in (min(units), max(units)) or (left and u.index != min(units)) or (
-                    not left and u.index != max(units)):
-                lo, hi = 0.0, u.width
             for k, poly, _ in u.blocks:
-                if self.p.gears[k].group == axis or k in partners:   # a gear it meshes may overlap it
-                    continue
-                xs, ys = [q[0] for q in poly], [q[1] for q in poly]
-                if min(ys) < y < max(ys) and min(xs) < hi and max(xs) > lo:
-                    count += 1
-        return count
+                if self.p.gears[k].link == link:
+                    out.append((u.index, min(q[0] for q in poly), max(q[0] for q in poly)))
+        return out
+
+    def _partners(self) -> dict:
+        """axis -> the axes of the pinions that mesh its own on the same carrier (a double-pinion
+        set): they stand at another angle about the main axis, so its pin passes behind them."""
+        out: dict = {}
+        axes, gears = self.p.axes, self.p.gears
+        for ia, ib in self.p.pair_gears:
+            a, b = axes[gears[ia].group], axes[gears[ib].group]
+            if a.group != b.group and a.parent is not None and a.parent == b.parent and not (a.inclined or b.inclined):
+                out.setdefault(a.group, set()).add(b.group)
+                out.setdefault(b.group, set()).add(a.group)
+        return out
 
     def _units_of_link(self, link) -> list:
         found = [u.index for u in self.g.units for k, _, _ in u.blocks if self.p.gears[k].link == link]

@@ -16,6 +16,40 @@ def _mirror_pt(p):
     return (p[0], -p[1])
 
 
+def _stack(spans) -> list:
+    """Rows (0, 1, -1, 2, ...) for shafts on one axis, in the order given: shafts whose spans
+    overlap sit side by side."""
+    rows, out = [], []
+    for s in spans:
+        level = 0
+        while any(lv == level and not (s[2] < lo or s[1] > hi) for lv, lo, hi in rows):
+            level = -level if level > 0 else 1 - level
+        rows.append((level, s[1], s[2]))
+        out.append(level)
+    return out
+
+
+def _rows(spans, offset, delta, axes) -> list:
+    """The rows of the shafts on one axis, in the order (of the few there are) whose arms, up or
+    down to the axes they hold, cross the fewest other shafts; the first such order."""
+    from itertools import permutations
+
+    best = None
+    for order in permutations(range(len(spans))) if len(spans) <= 6 else [range(len(spans))]:
+        levels = dict(zip(order, _stack([spans[i] for i in order])))
+        ys = {i: offset + levels[i] * delta for i in levels}
+        bad = 0
+        for i, (_link, _lo, _hi, _b, arms) in enumerate(spans):
+            for p, x in arms:
+                y0, y1 = sorted((ys[i], axes[p.axis].offset))
+                bad += sum(1 for j, t in enumerate(spans) if j != i and t[1] < x < t[2] and y0 < ys[j] < y1)
+        if best is None or bad < best[0]:
+            best = (bad, [levels[i] for i in range(len(spans))])
+        if bad == 0:
+            break
+    return best[1]
+
+
 class Emitter:
     # ------------------------------------------------------------------ drawing primitives
     def _line(self, link, kind, a, b, copy=False):
@@ -66,17 +100,26 @@ class Emitter:
         for m, x in r.risers.items():
             self._line(m, "riser", (x, lv[m, "in"]), (x, lv[m, "out"]))
         mirrored_axes = set(self.g.upper_axes)
+        pinned = set()
         for p, x, y, zone, other in r.ports:
             if p.kind == "gear":
                 self._line(p.member, "spoke", (x, lv[p.member, zone]), (x, y))
             elif p.kind in ("arm", "toframe"):
                 y0 = lv[p.member, zone] if p.kind == "arm" else self.top
                 self._line(p.member, "arm", (x, y0), (x, y))
-                pin = self._pin(p.axis, x, y)
                 if p.kind == "toframe":
                     self._symbol("ground", "", (p.member,), (), [], (x, self.top))
                 if full and p.axis in mirrored_axes:
                     self._line(p.member, "arm", _mirror_pt((x, y0)), _mirror_pt((x, y)), True)
+                if p.axis in pinned:   # the second arm of a bracket: its pin is drawn
+                    continue
+                pinned.add(p.axis)
+                if p.axis in r.pins:
+                    pin = ((r.pins[p.axis][0], y), (r.pins[p.axis][1], y))
+                    self._pin_line(p.axis, pin)
+                else:
+                    pin = self._pin(p.axis, x, y)
+                if full and p.axis in mirrored_axes:
                     self._line(p.member, "pin", _mirror_pt(pin[0]), _mirror_pt(pin[1]), True)
             elif p.kind == "brake":
                 self._brake(p, x, lv[p.member, zone])
@@ -97,6 +140,25 @@ class Emitter:
                     self._symbol(kind, name, links, [tuple(map(_mirror_pt, s)) for s in segs],
                                  [tuple(map(_mirror_pt, h)) for h in hatch], _mirror_pt(anchor), True)
 
+    def _pin_line(self, axis, pin):
+        """A pin, drawn dashed (hidden) where it passes behind the other pinion of its set."""
+        owner = self.p.axes[axis].parent
+        (x0, y), (x1, _) = pin
+        cuts = []
+        for k, poly, _u in self.placed_blocks:
+            if self.p.gears[k].group in self.behind.get(axis, ()):
+                xs, ys = [q[0] for q in poly], [q[1] for q in poly]
+                if min(ys) < y < max(ys) and min(xs) < x1 and max(xs) > x0:
+                    cuts.append((max(min(xs), x0), min(max(xs), x1)))
+        at = x0
+        for a, b in sorted(cuts):
+            if a > at:
+                self._line(owner, "pin", (at, y), (a, y))
+            self._line(owner, "hidden", (a, y), (b, y))
+            at = max(at, b)
+        if at < x1:
+            self._line(owner, "pin", (at, y), (x1, y))
+
     def _pin(self, axis, x, y):
         a = self.p.axes[axis]
         if a.inclined:
@@ -111,7 +173,7 @@ class Emitter:
         return pin
 
     def _brake(self, p, x, y0):
-        w, g, top = 0.5 * self.pitch, self.gap, self.top
+        w, g, top = 0.36 * self.pitch, self.gap, self.top
         plate = top - 2.2 * g
         self._line(p.member, "spoke", (x, y0), (x, plate))
         segs = [((x - w, plate), (x + w, plate)), ((x - w, plate + g), (x + w, plate + g)),
@@ -121,8 +183,8 @@ class Emitter:
         self._symbol("brake", p.name, (p.member,), segs, hatch, (x + w, plate + 0.5 * g))
 
     def _clutch(self, p, x, y1, y2):
-        w, g = 0.5 * self.pitch, self.gap
         (lo_m, lo), (hi_m, hi) = sorted([(p.member, y1), (p.other, y2)], key=lambda t: t[1])
+        w, g = 0.36 * self.pitch, min(self.gap, 0.4 * (hi - lo))   # plates between the two lines
         mid = (lo + hi) / 2
         self._line(lo_m, "spoke", (x, lo), (x, mid - g / 2))
         self._line(hi_m, "spoke", (x, hi), (x, mid + g / 2))
@@ -161,12 +223,7 @@ class Emitter:
                 if bearing:
                     lo, hi = lo - 0.35 * self.pitch, hi + 0.35 * self.pitch
                 spans.append([link, lo, hi, bearing, arms])
-            rows: list = []
-            for s in spans:   # shafts whose spans overlap sit side by side
-                level = 0
-                while any(lv == level and not (s[2] < lo or s[1] > hi) for lv, lo, hi in rows):
-                    level = -level if level > 0 else 1 - level
-                rows.append((level, s[1], s[2]))
+            for s, level in zip(spans, _rows(spans, a.offset, delta, parts.axes)):
                 y = a.offset + level * delta
                 link, lo, hi, bearing, arms = s
                 if link == self.ground:

@@ -10,7 +10,12 @@ Private to :mod:`gearlib.mechanism.sketch`. Read from the data alone:
   meshes a sun and a ring is one gear, a compound (stepped) planet two;
 * **pitch radii**: ``radii``, or the module and the teeth (:attr:`GearPair.pitch_radii`); teeth
   alone are relative sizes (a common module); a pair with neither (a symbolic ratio) takes the
-  size that closes its centre distance, or a nominal one;
+  size that closes its centre distance, or a nominal one. A profile-shifted pair
+  (``profile_shift``) runs at its *working* centre distance (:func:`~gearlib.mechanism.assembly.centre_distance`,
+  from inv(alpha_w) = inv(alpha) + 2 tan(alpha) (x1 + x2) / (z1 + z2)), not at the sum of its
+  reference pitch radii: its axis is placed there and its gears drawn at their working pitch
+  radii (the reference radii times a_w / a), the gear that meets a second mesh sized to close
+  it, so the blocks touch;
 * **where a child axis lies**: parallel to its parent at the centre distance of a spur mesh, or
   through a cone apex on its parent, inclined, for bevel meshes.
 """
@@ -22,6 +27,8 @@ from dataclasses import dataclass, field
 from statistics import median
 
 from ..errors import GeometryError
+from ._sketch_cones import Cones
+from .assembly import TOLERANCE, centre_distance
 
 __all__: list = []
 
@@ -58,7 +65,7 @@ def _close(a, b) -> bool:
     return abs(a - b) <= 1e-9 * max(abs(a), abs(b), 1.0)
 
 
-class Parts:
+class Parts(Cones):
     """Axes, gears and sizes of one mechanism (see the module docstring)."""
 
     def __init__(self, mech):
@@ -117,6 +124,7 @@ class Parts:
         module = median(modules) if modules else 1.0
         self.gears: list[Gear] = []
         self.pair_gears: list[tuple[int, int]] = []
+        self.working: list[float] = []   # working / reference centre distance (1 without profile shift)
         self.ratios: list = []   # |r_b / r_a| when the pair gives a numeric ratio only, else None
         by_key: dict = {}
         relative: set = set()    # pairs sized by their teeth alone
@@ -129,6 +137,7 @@ class Parts:
                 relative.add(i)
             ra, rb = (float(radii[0]), float(radii[1])) if radii is not None else (None, None)
             self.ratios.append(self._ratio(gp) if radii is None else None)
+            self.working.append(_working_factor(gp))
             ring_a = ring_b = False
             if gp.kind == "internal":
                 ring_a = self._first_is_ring(gp, ga, gb, ra, rb)
@@ -221,6 +230,8 @@ class Parts:
         known = [g.radius for g in self.gears if g.radius is not None]
         self.nominal = median(known) if known else 10.0
         self._done = {self.root}
+        self._ref: dict = {}        # gear -> its reference pitch radius, where drawn at a working one
+        self._fixed: set = set()    # gears whose drawn size a placed mesh already uses
         for gid in self.axes:
             a = self.axes[gid]
             if a.parent is None:
@@ -264,10 +275,33 @@ class Parts:
         return out + later
 
     def _distance(self, i, mine, other):
-        """The centre distance of pair *i* from known radii, or None."""
+        """The (working) centre distance of pair *i* from the gears' reference radii, or None."""
         g, o = self.gears[mine], self.gears[other]
         if g.radius is None or o.radius is None:
             return None
+        rg, ro = self._ref.get(g.index, g.radius), self._ref.get(o.index, o.radius)
+        return self.working[i] * (abs(rg - ro) if (g.ring or o.ring) else rg + ro)
+
+    def _close_mesh(self, mesh, d):
+        """Draw the gears of *mesh*, which the data make run at the centre distance *d* (a
+        profile-shifted pair at its working one), so that their blocks touch: at their working
+        pitch radii, or, where a gear's drawn size is already fixed by another mesh, the other one
+        sized to close *d* (a ring outside, a sun or planet inside)."""
+        i, mine, other = mesh
+        g, o = self.gears[mine], self.gears[other]
+        k = self.working[i]
+        if g.index not in self._fixed and o.index not in self._fixed:
+            for gear in (g, o):
+                self._ref.setdefault(gear.index, gear.radius)
+                gear.radius = self._ref[gear.index] * k
+        elif g.index not in self._fixed or o.index not in self._fixed:
+            have, need = (g, o) if g.index in self._fixed else (o, g)
+            self._ref.setdefault(need.index, need.radius)
+            need.radius = have.radius + d if need.ring else (have.radius - d if have.ring else d - have.radius)
+        self._fixed |= {g.index, o.index}
+
+    def _drawn(self, mesh) -> float:
+        g, o = self.gears[mesh[1]], self.gears[mesh[2]]
         return abs(g.radius - o.radius) if (g.ring or o.ring) else g.radius + o.radius
 
     def _place_parallel(self, a: Axis, meshes):
@@ -288,6 +322,9 @@ class Parts:
             want = abs(a.offset - q.offset) if q.group in (ref.group, parent.group) else None
             dm = self._distance(*m)
             label = self.mech.gear_pairs[m[0]].label
+            if dm is not None and want is not None and abs(dm - want) <= self._slack(m):
+                self._close_mesh(m, want)   # (a profile-shifted pair: at its working centre distance)
+                continue
             if dm is None:
                 if want is None:
                     self._assume(m)
@@ -301,6 +338,18 @@ class Parts:
                 if not abs(ra - rq) - 1e-9 <= dm <= ra + rq + 1e-9:
                     self.notes.append(f"gear pair {label}: no angle around axis {parent.label!r} gives its centre "
                                       f"distance {dm:g}")
+
+    def _slack(self, mesh) -> float:
+        """How far a pair's centre distance may differ from the one drawn and still close: for a
+        profile-shifted pair the tolerance of the assembly conditions (10**-3 module), else a
+        rounding error."""
+        gp = self.mech.gear_pairs[mesh[0]]
+        d = self._distance(*mesh)
+        if gp.profile_shift is None:
+            return 1e-9 * max(d, 1.0)
+        z1, z2 = gp.teeth
+        modules = (abs(z1 - z2) if gp.kind == "internal" else z1 + z2) / 2
+        return TOLERANCE * d / self.working[mesh[0]] / modules if modules else 1e-9 * max(d, 1.0)
 
     def _assume(self, mesh):
         """Radii for the unknown gears of *mesh*: from its ratio where it gives one, else nominal."""
@@ -347,76 +396,17 @@ class Parts:
             (o if first is g else g).radius = d - r_first
 
     # ------------------------------------------------------------------ bevel (inclined) axes
-    def _incline(self, a: Axis, meshes):
-        """Direction of an inclined axis and the place of each of its gears' pitch circles."""
-        self._done.add(a.group)
-        a.inclined = True
-        for _, mine, other in meshes:
-            for k in (mine, other):
-                if self.gears[k].radius is None:
-                    self.gears[k].radius = self.nominal
-        on_axis = {}
-        for i, mine, other in meshes:
-            on_axis.setdefault(mine, []).append((i, other))
-        phi = None
-        for gi, central in on_axis.items():
-            if len(central) > 2:
-                names = ", ".join(str(self.gears[o].link) for _, o in central)
-                raise GeometryError(f"bevel gear of link {self.gears[gi].link} meshes {names}: a bevel gear meets "
-                                    "at most two gears on the axis it turns about (one at each end of its pitch diameter)")
-            if len(central) == 2 and phi is None:
-                phi = self._two_mesh_angle(gi, central)
-        if phi is None:
-            i, gi, _ = meshes[0]
-            phi = self._shaft_angle(self.mech.gear_pairs[i])
-        if abs(math.sin(phi)) < 1e-6:
-            raise GeometryError(f"axis {a.label!r}: its bevel gears would turn about an axis parallel to their "
-                                "partners'; give the pair's angles or make it a spur pair")
-        a.angle = phi
-        taken = []
-        for gi, central in on_axis.items():
-            g = self.gears[gi]
-            if len(central) == 2:
-                (i1, o1), (i2, o2) = central
-                r1, r2 = self.gears[o1].radius, self.gears[o2].radius
-                if abs((r1 - r2) - 2 * g.radius * math.cos(phi)) > 1e-6 * max(r1, r2):
-                    raise GeometryError(
-                        f"bevel gear of link {g.link} (pitch radius {g.radius:g}) cannot mesh both {self.gears[o1].link} "
-                        f"and {self.gears[o2].link} about axis {a.label!r} with the direction its other gears give it")
-                g.h = (r1 + r2) / (2 * math.sin(phi))
-                g.sides = {i1: 1, i2: -1}
-            else:
-                (i1, o1), = central
-                rc = self.gears[o1].radius
-                options = []
-                for s in (-1, 1):
-                    h = (rc - s * g.radius * math.cos(phi)) / math.sin(phi)
-                    if h > 0.05 * g.radius:
-                        options.append((min((abs(h - t) for t in taken), default=0.0), -s, h, s))
-                if not options:
-                    raise GeometryError(f"bevel pair {self.mech.gear_pairs[i1].label}: no cone apex fits pitch radii "
-                                        f"{g.radius:g} and {rc:g} at the axis angle {math.degrees(phi):.0f} degrees")
-                _, _, g.h, s = max(options)
-                g.sides = {i1: s}
-            taken.append(g.h)
 
-    def _two_mesh_angle(self, gi, central) -> float:
-        g = self.gears[gi]
-        (_, o1), (_, o2) = central
-        r1, r2 = self.gears[o1].radius, self.gears[o2].radius
-        c = (r1 - r2) / (2 * g.radius)
-        if abs(c) > 1 + 1e-9:
-            raise GeometryError(
-                f"bevel gear of link {g.link} (pitch radius {g.radius:g}) cannot mesh both {self.gears[o1].link} and "
-                f"{self.gears[o2].link}: their pitch radii ({r1:g}, {r2:g}) differ by more than its pitch diameter")
-        return math.acos(max(-1.0, min(1.0, c)))
 
-    @staticmethod
-    def _shaft_angle(gp) -> float:
-        """A bevel pair's shaft angle: from Penaud's angles when they give a direction, else 90 degrees."""
-        if gp.angles is not None:
-            sigma = abs(float(gp.angles[0] - gp.angles[1])) % (2 * math.pi)
-            sigma = min(sigma, 2 * math.pi - sigma)
-            if 1e-6 < sigma < math.pi - 1e-6:
-                return sigma
-        return math.pi / 2
+def _working_factor(gp) -> float:
+    """Working over reference centre distance of a profile-shifted spur or helical pair (1 for
+    any other pair): cos(alpha) / cos(alpha_w), the factor that also scales its pitch radii."""
+    if gp.profile_shift is None or gp.teeth is None or gp.kind == "bevel" or not any(gp.profile_shift):
+        return 1.0
+    z1, z2 = gp.teeth
+    reference = abs(z1 - z2) if gp.kind == "internal" else z1 + z2
+    if reference == 0:
+        return 1.0
+    radii = gp.pitch_radii
+    m_t = 2 * float(radii[0]) / z1 if radii is not None else 1.0
+    return centre_distance(gp) / (m_t * reference / 2)

@@ -38,10 +38,11 @@ import warnings
 from collections import Counter
 from dataclasses import dataclass
 
-from ..errors import AssemblyWarning
+from ..errors import AssemblyWarning, InputError
 from .data import requires_mechanism
 
-__all__ = ["PlanetarySet", "AssemblyCondition", "planetary_sets", "assembly_conditions", "check_assembly"]
+__all__ = ["PlanetarySet", "AssemblyCondition", "planetary_sets", "assembly_conditions", "check_assembly",
+           "with_concentric_teeth"]
 
 TOLERANCE = 1e-3
 """Centre distances that agree to this fraction of a module count as equal."""
@@ -331,3 +332,65 @@ def check_assembly(mech, *, where: str | None = None, stacklevel: int = 2) -> tu
     for c in failed:
         warnings.warn(f"{head}: planetary set {c.message}", AssemblyWarning, stacklevel=stacklevel + 1)
     return failed
+
+
+def with_concentric_teeth(mech, teeth: dict, *, min_planet_teeth: int = 1):
+    """*mech* with new tooth numbers for central gears (suns and rings), each planet of a simple
+    set on them resized so that the set stays concentric: ``Z_p = (Z_r - Z_s) / 2``.
+
+    *teeth* maps a central gear to its number of teeth. A gear that is not a central gear of a
+    simple set, a ring and a sun whose tooth numbers differ by an odd number (the planet would
+    need half a tooth), a planet left with fewer than *min_planet_teeth*, or a planet shared by two sets
+    that ask for different sizes raises :class:`~gearlib.InputError`. Equal spacing and tip
+    clearance are not enforced: :func:`~gearlib.assembly_conditions` reports them.
+
+    >>> import gearlib as gl
+    >>> m = gl.with_concentric_teeth(gl.catalog.simple_planetary(sun=24, ring=60), {3: 72})
+    >>> [gp.teeth for gp in m.gear_pairs]
+    [(24, 24), (24, 72)]
+    """
+    sets = [s for s in planetary_sets(mech) if s.kind == "simple"]
+    centrals = {g for s in sets for g in s.centrals}
+    new = {}
+    for gear, z in teeth.items():
+        g = mech.resolve(gear)
+        if g not in centrals:
+            raise InputError(f"gear {g} is not the sun or the ring of a simple planetary set of {mech.name!r}; "
+                             f"give the teeth of one of {', '.join(map(str, sorted(centrals, key=str)))} "
+                             "(a planet follows its sun and ring)")
+        if isinstance(z, bool) or int(z) != z or z < 1:
+            raise InputError(f"gear {g}: a number of teeth is a positive whole number, got {z!r}")
+        new[g] = int(z)
+    planets: dict = {}
+    for s in sets:
+        if not new.keys() & set(s.centrals):
+            continue
+        (g1, g2), p = s.centrals, s.planets[0]
+        kinds = {g: gp.kind for g, gp in zip((g1, g2), s.pairs)}
+        if sorted(kinds.values()) != ["external", "internal"]:
+            continue   # not a sun, a planet and a ring
+        ring = g1 if kinds[g1] == "internal" else g2
+        sun = g2 if ring == g1 else g1
+        z_ring = new.get(ring, _teeth(s.pairs[(g1, g2).index(ring)], ring))
+        z_sun = new.get(sun, _teeth(s.pairs[(g1, g2).index(sun)], sun))
+        if (z_ring - z_sun) % 2:
+            raise InputError(f"ring {ring} ({z_ring} teeth) and sun {sun} ({z_sun} teeth) differ by an odd number: "
+                             f"planet {p} would need {(z_ring - z_sun) / 2} teeth; change one of them by one tooth")
+        z_p = (z_ring - z_sun) // 2
+        if z_p < max(1, min_planet_teeth):
+            raise InputError(f"ring {ring} ({z_ring} teeth) around sun {sun} ({z_sun} teeth) leaves planet {p} "
+                             f"{max(z_p, 0)} teeth, fewer than {max(1, min_planet_teeth)}: give the ring more teeth "
+                             "or the sun fewer")
+        if planets.get(p, z_p) != z_p:
+            raise InputError(f"planet {p} would need {planets[p]} teeth in one set and {z_p} in another; "
+                             "change the teeth of its central gears together")
+        planets[p] = z_p
+    sizes = {**new, **planets}
+    out = mech
+    for gp in mech.gear_pairs:
+        if gp.teeth is None or not sizes.keys() & set(gp.gears):
+            continue
+        changed = tuple(sizes.get(g, z) for g, z in zip(gp.gears, gp.teeth))
+        if changed != gp.teeth:
+            out = out.with_gear_pair(gp.gears, teeth=changed)
+    return out

@@ -62,7 +62,9 @@ class WillisEquation:
         return self.lhs - self.rhs
 
     def _repr_latex_(self) -> str:
-        return f"${sympy.latex(self.lhs)} = {sympy.latex(self.rhs)}$"
+        from .display import Formula
+
+        return f"${Formula(self.lhs).latex()} = {Formula(self.rhs).latex()}$"
 
     def __str__(self) -> str:
         return f"{self.lhs} = {self.rhs}"

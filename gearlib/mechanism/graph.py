@@ -24,7 +24,7 @@ from .elements import GearPair
 from .data import Mechanism
 from ._accept import takes_mechanism
 
-__all__ = ["to_networkx", "FundamentalCircuit", "fundamental_circuits", "displacement_graph"]
+__all__ = ["to_networkx", "FundamentalCircuit", "fundamental_circuits", "displacement_graph", "tilted_links"]
 
 
 @takes_mechanism
@@ -83,3 +83,45 @@ def displacement_graph(mech: Mechanism) -> nx.MultiGraph:
     for gp in mech.gear_pairs:
         g.add_edge(*gp.gears, carrier=gp.carrier, pair=gp)
     return g
+
+
+def tilted_links(mech: Mechanism, ground=None) -> dict:
+    """``{link: the link it turns on}`` for every link whose axis is not parallel to the
+    ground's: a bevel planet. Its speed in the Willis equations is no angular velocity about
+    one axis (it adds the carrier's rate about the main axis to the planet's spin about its
+    own); its speed relative to the link it turns on is one, about their common axis.
+
+    Two axes are parallel when a spur or internal pair meshes gears on them (on its carrier);
+    a link is *tilted* when the axes of the turning pairs between it and the ground are not
+    all parallel. In a train of spur gears no link is tilted.
+
+    >>> import gearlib as gl
+    >>> gl.mechanism.tilted_links(gl.catalog.humpage())
+    {2: 6}
+    >>> gl.mechanism.tilted_links(gl.catalog.simple_planetary())
+    {}
+    """
+    ground = mech.resolve(ground if ground is not None else (mech.ground if mech.ground is not None
+                                                             else mech.link_ids[0]))
+    parent = {}
+
+    def find(a):
+        while parent.get(a, a) != a:
+            a = parent[a]
+        return a
+
+    for gp in mech.gear_pairs:
+        if gp.kind != "bevel":
+            a, b = (mech.axis_of(g, gp.carrier) for g in gp.gears)
+            if a is not None and b is not None and find(a) != find(b):
+                parent[find(a)] = find(b)
+    thin = nx.Graph()
+    thin.add_nodes_from(mech.link_ids)
+    for tp in mech.turning_pairs:
+        thin.add_edge(*tp.links, axis=tp.axis)
+    out = {}
+    for link, path in nx.single_source_shortest_path(thin, ground).items():
+        classes = {find(thin.edges[u, v]["axis"]) for u, v in zip(path, path[1:])}
+        if len(classes) > 1:
+            out[link] = path[-2]
+    return out

@@ -34,6 +34,7 @@ Fraction(2, 7)
 from __future__ import annotations
 
 import sys
+import html
 
 import cmath
 import warnings
@@ -45,6 +46,7 @@ import numpy as np
 import sympy
 
 from .._common import linalg as _linalg
+from .._common.matview import polar_text
 from .._common.parse import parse_expr, to_fraction
 from .equations import omega
 from ..errors import ConstraintError, DataFormatError, InputError
@@ -257,12 +259,29 @@ class Solution:
             out.append((lk.id, lk.name or "", format_value(v, digits)))
         return out
 
+    def tilted_note(self) -> str:
+        """A sentence on the links whose axes are tilted to the ground's (bevel planets,
+        :func:`~gearlib.mechanism.tilted_links`): their value is no angular velocity; empty when
+        there are none."""
+        from .graph import tilted_links
+
+        tilted = tilted_links(self.mechanism, self.constraints.ground)
+        if not tilted:
+            return ""
+        pairs = ", ".join(f"ω{x} − ω{ref}" for x, ref in tilted.items())
+        links = ", ".join(str(x) for x in tilted)
+        return (f"Link{'s' if len(tilted) > 1 else ''} {links} turn{'' if len(tilted) > 1 else 's'} about an axis "
+                f"tilted to the ground's: {'their' if len(tilted) > 1 else 'its'} ω is a value of the Willis "
+                f"equations, not an angular velocity; the spin relative to the link it turns on ({pairs}) is one.")
+
     def __str__(self) -> str:
         rows = self.table()
         w = max(len(str(r[0])) for r in rows)
         n = max(len(r[1]) for r in rows)
         head = f"speeds of {self.mechanism.name!r} (ground {self.constraints.ground}, method {self.method})"
-        return "\n".join([head] + [f"  {str(i):>{w}}  {name:<{n}}  {val}" for i, name, val in rows])
+        note = self.tilted_note()
+        return "\n".join([head] + [f"  {str(i):>{w}}  {name:<{n}}  {val}" for i, name, val in rows]
+                         + ([note] if note else []))
 
     def _repr_pretty_(self, p, cycle):
         """IPython's text/plain (the PDF book, a terminal): the table of :meth:`__str__`, not the
@@ -276,6 +295,7 @@ class Solution:
         return (
             f"<table><caption>Speeds relative to link {self.constraints.ground} ({self.method})</caption>"
             f"<tr><th>link</th><th>name</th><th>&omega;</th></tr>{rows}</table>"
+            + (f"<p><small>{html.escape(note)}</small></p>" if (note := self.tilted_note()) else "")
         )
 
     def plot(self, ax=None, **kwargs):
@@ -286,7 +306,8 @@ class Solution:
 
 
 def format_value(v, digits: int = 6) -> str:
-    """A speed or ratio as short text: fractions exactly, floats rounded, complex in polar form."""
+    """A speed or ratio as short text: fractions exactly, floats rounded, complex in polar form
+    ``r∠phi°`` (the angle in degrees)."""
     if isinstance(v, Fraction):
         return str(v)
     if isinstance(v, sympy.Basic):
@@ -298,7 +319,7 @@ def format_value(v, digits: int = 6) -> str:
     z = complex(v)
     if abs(z.imag) <= 1e-12 * max(1.0, abs(z)):
         return f"{z.real:.{digits}g}"
-    return f"{abs(z):.{digits}g}∠{np.angle(z):.{digits}g}"
+    return polar_text(z, digits)
 
 
 def _to_complex(v) -> complex:

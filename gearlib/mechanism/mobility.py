@@ -1,22 +1,28 @@
-"""Degrees of freedom: two counting rules and the rank of the Willis equations.
+"""Degrees of freedom: a count and the rank of the Willis equations.
 
-* the planar mobility count ``F = 3(m - 1) - 2 J_R - J_G`` (Chen, Yao and Lee eq. (1)),
-  for trains whose axes are all parallel;
-* the gear-pair/turning-pair rule ``F = J_R - J_G`` (Buchsbaum and Freudenstein), which
-  assumes the turning pairs form a tree (``J_R = m - 1``) and holds for bevel trains too;
+* the mobility count ``F = 3(m - 1) - 2 J_R - J_G`` (Chen, Yao and Lee eq. (1)), in which
+  every link has three freedoms and a turning pair removes two, a gear pair one (planar and
+  spherical trains);
+* the gear-pair/turning-pair rule ``F = J_R - J_G`` (Buchsbaum and Freudenstein): the same
+  count when the turning pairs form a tree, ``J_R = m - 1``, and then it holds for bevel
+  trains too (each turning pair gives one rotation, each gear pair ties two). In general
+  ``3(m - 1) - 2 J_R - J_G = (J_R - J_G) - 3 (J_R - m + 1)``: each loop of turning pairs
+  lowers the first by two and raises the second by one;
 * the rank: ``F = m - 1 - rank(W)`` with ``W`` the matrix of the Willis equations, which is
   what the mechanism actually does.
 
 When they disagree :func:`dof` says why: loops of coaxial bearings, gear pairs whose
-Willis equation repeats the others (a duplicate planet), bevel pairs, or gear loops that
-lock. Derived in chapter 1.
+Willis equation repeats the others (a duplicate planet), or gear loops that lock. Derived
+in chapter 1.
 
 >>> import gearlib as gl
 >>> mob = gl.dof(gl.catalog.car_differential())
 >>> mob.planar, mob.count, mob.rank
 (-3, 3, 2)
 >>> print(mob.explanation[0])
-Turning pairs (7, 3), (7, 4) close loops of coaxial bearings (one axis label): they count in J_R but remove no freedom.
+Turning pairs (7, 3), (7, 4) close loops of coaxial bearings (one axis label): they count in J_R but remove no freedom; each such loop lowers the planar count by two and raises the pair rule by one.
+>>> print(mob.explanation[-1])
+Without them both counts give 2, the rank.
 """
 
 from __future__ import annotations
@@ -249,7 +255,7 @@ def dof(mech: Mechanism, ground=None, *, held=(), joined=()) -> Mobility:
         names = ", ".join(str(tp.links) for tp in red_tp)
         notes.append(
             f"Turning pairs {names} close loops of coaxial bearings (one axis label): they count in J_R but remove "
-            "no freedom."
+            "no freedom; each such loop lowers the planar count by two and raises the pair rule by one."
         )
     if redundant_gp:
         names = ", ".join(gp.label for gp in redundant_gp)
@@ -258,8 +264,6 @@ def dof(mech: Mechanism, ground=None, *, held=(), joined=()) -> Mobility:
             "new equation: the Willis equation follows from the other pairs (for example a second planet "
             "identical to the first), so the counts are too low by one per such pair."
         )
-    if not mech.is_planar:
-        notes.append("The planar count assumes parallel axes; with bevel pairs only the pair rule and the rank apply.")
     if locked:
         names = ", ".join(gp.label for gp in locked)
         notes.append(
@@ -270,7 +274,9 @@ def dof(mech: Mechanism, ground=None, *, held=(), joined=()) -> Mobility:
         notes.append("The counting rules assume the turning pairs form a tree; here they do not.")
     if red_tp or redundant_gp:
         corrected = (jr - len(red_tp)) - (jg - len(redundant_gp)) - shift
-        notes.append(f"Without them the pair rule gives {corrected}, the rank.")
+        planar_corrected = 3 * (m - 1) - 2 * (jr - len(red_tp)) - (jg - len(redundant_gp)) - shift
+        both = "both counts give" if planar_corrected == corrected else f"the planar count gives {planar_corrected} and the pair rule"
+        notes.append(f"Without them {both} {corrected}" + (", the rank." if corrected == rank_dof else f"; the rank is {rank_dof}."))
     return Mobility(m, jr, jg, planar, count, rank_dof, red_tp, redundant_gp, locked, tuple(notes))
 
 

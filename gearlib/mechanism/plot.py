@@ -10,20 +10,28 @@ square, input links as black squares, other links as circles.
 """
 
 from __future__ import annotations
+
 import contextlib
 import functools
 import json
 import math
 import pathlib
 import textwrap
+
 import numpy as np
+
+from .._common.matview import polar_text
 from .._common.parse import shown
 from ..errors import DataFormatError
-from .graph import to_networkx
-from .data import Mechanism
 from ._accept import takes_mechanism
+from .data import Mechanism
+from .graph import to_networkx
 
-__all__ = ['style', 'graph_layout', 'draw_graph', 'plot_speeds', 'plot_ratio_sweep']
+from .._common.matview import polar_text
+from .data import Mechanism
+from .graph import to_networkx
+
+__all__ = ["style", "graph_layout", "draw_graph", "plot_speeds", "plot_ratio_sweep"]
 
 
 _STYLE = {
@@ -199,37 +207,83 @@ def draw_graph(mech: Mechanism, ax=None, *, ground=None, inputs=None, pos=None, 
     return ax
 
 
-def plot_speeds(solution, ax=None, *, links=None, title=None):
+def _shown(mech, ground, links):
+    """``(link, reference or None, label)`` per link: a tilted link (a bevel planet,
+    :func:`~gearlib.mechanism.tilted_links`) is shown by its speed relative to the link it
+    turns on, which is an angular velocity; its own Willis-equation value is not."""
+    from .graph import tilted_links
+
+    tilted = tilted_links(mech, ground)
+    out = []
+    for x in links:
+        name = mech.link(x).name
+        if x in tilted:
+            ref = tilted[x]
+            out.append((x, ref, f"{x}/{ref}" + (f" {name}" if name else "")))
+        else:
+            out.append((x, None, f"{x} {name}" if name else str(x)))
+    return out
+
+
+def _values(z, mech, shown):
+    return np.array([z[mech.index[x]] - (z[mech.index[ref]] if ref is not None else 0) for x, ref, _ in shown])
+
+
+def _is_real(z) -> bool:
+    return abs(z.imag) <= 1e-12 * max(1.0, abs(z))
+
+
+def plot_speeds(solution, ax=None, *, links=None, title=None, unit="rad/s"):
     """Bar chart of link speeds (relative to the ground) from a :class:`~gearlib.Solution`.
 
-    Complex speeds (bevel trains in Penaud's method) are drawn by magnitude, with their
-    angle written on the bar.
+    A link whose axis is tilted to the ground's (a bevel planet:
+    :func:`~gearlib.mechanism.tilted_links`) is shown by its speed relative to the link it
+    turns on, labelled ``2/6``: that is its spin about its own axis, where its value in the
+    Willis equations adds rates about different axes. A complex speed (Penaud and Alazard's
+    weights, chapter 4) is drawn by its magnitude, its angle written on the bar (in radians,
+    as the x-axis says).
     """
     if not hasattr(solution, "as_complex"):
         hint = " (solve first: gl.speeds(mech, ground=..., inputs={...}))" if isinstance(solution, Mechanism) else ""
         raise DataFormatError(f"solution: expected the result of gl.speeds(...), got {shown(solution)}{hint}")
     ax = _axes(ax, figsize=(6.0, 3.2))
     mech = solution.mechanism
+    ground = solution.constraints.ground
     links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))
-    values = np.array([complex(solution.as_complex()[mech.index[x]]) for x in links])
-    is_complex = np.any(np.abs(values.imag) > 1e-12 * np.maximum(1.0, np.abs(values)))
-    heights = np.abs(values) if is_complex else values.real
+    shown = _shown(mech, ground, links)
+    values = _values(solution.as_complex(), mech, shown)
+    heights = np.array([z.real if _is_real(z) else abs(z) for z in values])
     # names wrapped to the width of a bar slot (about 70 characters across at this size)
     width = max(8, 70 // max(1, len(links)))
-    names = [f"{x}\n{textwrap.fill(mech.link(x).name, width)}" if mech.link(x).name else str(x) for x in links]
-    colors = ["0.6" if x == solution.constraints.ground else "tab:blue" for x in links]
+    names = [textwrap.fill(label, width) for _, _, label in shown]
+    colors = ["0.6" if x == ground else ("tab:orange" if ref is not None else "tab:blue") for x, ref, _ in shown]
     bars = ax.bar(range(len(links)), heights, color=colors)
     ax.set_xticks(range(len(links)), names, fontsize=8)
     ax.axhline(0, color="black", linewidth=0.8)
-    ax.set_ylabel("|ω|" if is_complex else "ω")
+    ax.set_ylabel(f"angular velocity ({unit})" if unit else "angular velocity")
+    if any(not _is_real(z) for z in values):
+        ax.set_xlabel("r∠φ: magnitude r, angle φ in degrees", fontsize=8)
+    angled = False
     for bar, z, h in zip(bars, values, heights):
-        text = f"{h:.3g}" if not is_complex else f"{abs(z):.3g}\n∠{np.angle(z):.2f}"
+        text = f"{h:.3g}"
+        if not _is_real(z):
+            text, angled = polar_text(z, 3).replace("∠", "\n∠"), True
         ax.annotate(text, (bar.get_x() + bar.get_width() / 2, h), ha="center",
                     va="bottom" if h >= 0 else "top", fontsize=8, xytext=(0, 2 if h >= 0 else -2),
                     textcoords="offset points")
-    ax.margins(y=0.2 if is_complex else 0.12)  # room for the value labels under the title
-    ax.set_title(title if title is not None else f"speeds, link {solution.constraints.ground} fixed")
+    ax.margins(y=0.2 if angled else 0.12)  # room for the value labels under the title
+    ax.set_title(title if title is not None else _title(ground, shown))
     return ax
+
+
+def _title(ground, shown) -> str:
+    rel = [(x, ref) for x, ref, _ in shown if ref is not None]
+    text = f"speeds, link {ground} fixed"
+    if rel:
+        refs = {ref for _, ref in rel}
+        text += "; " + ", ".join(f"{x}/{ref}" for x, ref in rel) + ": relative to " + (
+            f"{refs.pop()}" if len(refs) == 1 else "the link each turns on")
+    return text
 
 
 def plot_ratio_sweep(xs, ratios, ax=None, *, xlabel="", ylabel="speed ratio", marks=(), title=None):

@@ -25,8 +25,8 @@ import numpy as np
 
 from .data import Mechanism
 from .kinematics import speeds
-from .plot import _axes
 from ._accept import takes_mechanism
+from .sweep import plot_speed_sweep  # noqa: F401  (the static twin, offered here too)
 
 __all__ = ["Canvas", "Explorer", "SpeedExplorer", "speed_explorer", "plot_speed_sweep", "render_png", "encode_png",
            "with_snapshot"]
@@ -288,97 +288,81 @@ def with_snapshot(bundle: dict | None, image: bytes) -> dict | None:
 class SpeedExplorer(Explorer):
     """Sliders for tooth numbers; shows every link's speed (:func:`gearlib.plot_speeds`).
 
-    Use :meth:`update` to compute and redraw without a browser (this is what a slider
-    calls), and display the object (or its :attr:`widget`) in JupyterLab.
+    One slider per gear (:func:`~gearlib.mechanism.gears`: a planet meshing sun and ring has
+    one tooth number), none for a ring that must follow its sun and planet so that the planet
+    fits (:func:`~gearlib.mechanism.followers`); the text line gives its tooth number. Use
+    :meth:`update` to compute and redraw without a browser (this is what a slider calls), and
+    display the object (or its ``widget``) in JupyterLab.
     """
 
-    def __init__(self, mech: Mechanism, ground=None, inputs=None, *, pairs=None, max_teeth: int = 120):
+    def __init__(self, mech: Mechanism, ground=None, inputs=None, *, pairs=None, links=None, max_teeth: int = 120):
+        from .teeth import followers, gears
+
         self.mechanism = mech
         self.ground = mech.ground if ground is None else ground
         self.inputs = inputs if inputs is not None else {x: 1 for x in mech.inputs}
-        chosen = mech.gear_pairs if pairs is None else [mech.gear_pair(*p)[0] for p in pairs]
-        self.pairs = [gp for gp in chosen if gp.teeth is not None]
+        self.followers = followers(mech, pairs)
+        self.gears = [g for g in gears(mech, pairs) if g.key not in self.followers]
+        self.links = links
         self.max_teeth = max_teeth
         self._start()
 
     def keys(self) -> list[str]:
-        """Slider names: ``N_<gear>_in_<a>_<b>`` for each tooth number."""
-        return [f"N_{g}_in_{gp.gears[0]}_{gp.gears[1]}" for gp in self.pairs for g in gp.gears]
+        """Slider names: ``N_<gear>`` for each gear (``N_<gear>_in_<a>_<b>`` on a link with several)."""
+        return [g.key for g in self.gears]
 
     def current(self) -> dict:
-        return {k: t for k, t in zip(self.keys(), (t for gp in self.pairs for t in gp.teeth))}
+        return {g.key: g.teeth for g in self.gears}
 
     def mechanism_for(self, **teeth) -> Mechanism:
-        mech = self.mechanism
-        values = self.current() | teeth
-        for gp in self.pairs:
-            a, b = gp.gears
-            ta = values[f"N_{a}_in_{a}_{b}"]
-            tb = values[f"N_{b}_in_{a}_{b}"]
-            if (ta, tb) != gp.teeth:
-                mech = mech.with_gear_pair(gp.gears, teeth=(int(ta), int(tb)))
-        return mech
+        """The mechanism with these tooth numbers (keys of :meth:`keys`); followers follow."""
+        from .teeth import set_teeth
+
+        values = self.current() | {k: int(v) for k, v in teeth.items()}
+        changed = {k: v for k, v in values.items() if self.current()[k] != v}
+        for sun, planet in self.followers.values():  # a ring follows its sun and planet together
+            if sun in changed or planet in changed:
+                changed |= {sun: values[sun], planet: values[planet]}
+        return set_teeth(self.mechanism, changed) if changed else self.mechanism
 
     def update(self, **teeth) -> bytes:
-        """Recompute the speeds for these tooth numbers and redraw; returns the PNG."""
+        """Recompute the speeds for these tooth numbers and redraw; returns the PNG. Tooth numbers
+        that cannot be built are named in the text line, and the picture stays as it was."""
+        from ..errors import ToothNumberError
         from .plot import plot_speeds
+        from .teeth import gears
 
-        sol = speeds(self.mechanism_for(**teeth), self.ground, self.inputs)
+        try:
+            mech = self.mechanism_for(**teeth)
+        except ToothNumberError as err:
+            self.text = str(err)
+            self._show()
+            return self.image
+        sol = speeds(mech, self.ground, self.inputs)
         inputs = ", ".join(f"ω{k} = {v}" for k, v in self.inputs.items())
         self.text = f"inputs {inputs}; link {self.ground} fixed"
+        now = {g.key: g.teeth for g in gears(mech)}
+        for ring, (sun, planet) in self.followers.items():
+            self.text += f"; {ring} = {sun} + 2 {planet} = {now[ring]} (so that the planet fits)"
         if self._canvas is None:
-            self._canvas = Canvas(margins=(0.12, 0.98, 0.22, 0.9), keep_axes=True, stable_limits=True)
-        self.image = self._canvas.png(lambda ax: plot_speeds(sol, ax=ax))
+            self._canvas = Canvas(margins=(0.17, 0.98, 0.22, 0.9), keep_axes=True, stable_limits=True)
+        self.image = self._canvas.png(lambda ax: plot_speeds(sol, ax=ax, links=self.links))
         self._show()
         return self.image
 
     def controls(self, w) -> list:
-        return self._slider_rows(w, {key: w.IntSlider(value=value, min=5, max=self.max_teeth,
-                                                      description=key.split("_in_")[0], continuous_update=False,
-                                                      tooltip=key)
-                                     for key, value in self.current().items()})
+        return self._slider_rows(w, {g.key: w.IntSlider(value=g.teeth, min=5, max=self.max_teeth,
+                                                        description=g.key.split("_in_")[0] + (
+                                                            f" ({g.key.split('_in_')[1].replace('_', ',')})"
+                                                            if "_in_" in g.key else ""),
+                                                        continuous_update=False, tooltip=f"teeth of gear {g.link}",
+                                                        style={"description_width": "initial"})
+                                     for g in self.gears})
 
 
 @takes_mechanism
-def speed_explorer(mech: Mechanism, ground=None, inputs=None, *, pairs=None, max_teeth: int = 120) -> SpeedExplorer:
-    """A widget: tooth-number sliders for ``pairs`` (default: all) and a bar chart of every
-    link's speed. Static twin: :func:`plot_speed_sweep`."""
-    return SpeedExplorer(mech, ground, inputs, pairs=pairs, max_teeth=max_teeth)
-
-
-@takes_mechanism
-def plot_speed_sweep(mech: Mechanism, ground=None, inputs=None, *, pair, gear, values, links=None, ax=None,
-                     title=None):
-    """Every link's speed as the tooth number of one gear varies: the static twin of
-    :func:`speed_explorer`.
-
-    ``pair`` names the gear pair (two gears), ``gear`` the gear of that pair whose tooth
-    number takes each of ``values``. Complex speeds are drawn by magnitude.
-    """
-    ax = _axes(ax, figsize=(6.0, 3.4))
-    gp, _ = mech.gear_pair(*pair)
-    gear = mech.resolve(gear)
-    ground = mech.ground if ground is None else ground
-    inputs = inputs if inputs is not None else {x: 1 for x in mech.inputs}
-    links = list(mech.link_ids if links is None else (mech.resolve(x) for x in links))
-    rows = []
-    for n in values:
-        teeth = (n, gp.teeth[1]) if gear == gp.gears[0] else (gp.teeth[0], n)
-        sol = speeds(mech.with_gear_pair(gp.gears, teeth=teeth), ground, inputs)
-        z = sol.as_complex()
-        rows.append([z[mech.index[x]] for x in links])
-    rows = np.array(rows)
-    is_complex = np.any(np.abs(rows.imag) > 1e-12 * np.maximum(1.0, np.abs(rows)))
-    for j, x in enumerate(links):
-        if x == ground:
-            continue
-        name = mech.link(x).name
-        y = np.abs(rows[:, j]) if is_complex else rows[:, j].real
-        ax.plot(list(values), y, marker="o", markersize=3, label=f"{x} {name}" if name else str(x))
-    ax.axhline(0, color="black", linewidth=0.8)
-    ax.axvline(gp.teeth[gp.gears.index(gear)], color="0.6", linestyle=":", linewidth=1)
-    ax.set_xlabel(f"teeth of gear {gear} in pair {gp.label}")
-    ax.set_ylabel("|ω|" if is_complex else "ω")
-    ax.legend(fontsize=8, ncols=2)
-    ax.set_title(title if title is not None else f"speeds, link {ground} fixed")
-    return ax
+def speed_explorer(mech: Mechanism, ground=None, inputs=None, *, pairs=None, links=None,
+                   max_teeth: int = 120) -> SpeedExplorer:
+    """A widget: tooth-number sliders for the gears of ``pairs`` (default: all) and a bar chart
+    of the speeds of ``links`` (default: every link). Static twin: :func:`plot_speed_sweep`."""
+    return SpeedExplorer(mech, ground, inputs, pairs=pairs, links=links, max_teeth=max_teeth)

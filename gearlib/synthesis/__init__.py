@@ -24,7 +24,7 @@ EXPORTS = {
     "atlas": ("geared_chains", "canonical_graph", "isomorphic", "is_fractionated", "chain_problems", "MAX_LINKS"),
     "counts": ("chain_counts", "ChainCounts", "MAX_COUNT_LINKS", "PublishedCount", "PUBLISHED_COUNTS", "CountRow",
                "count_table", "StoredCounts", "stored_counts"),
-    "drawing": ("plot_dgm", "plot_identification", "equation_text"),
+    "drawing": ("plot_dgm", "plot_identification", "equation_text", "chain_layout"),
     "widget": ("DGMExplorer", "dgm_explorer"),
 }
 

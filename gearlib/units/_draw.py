@@ -218,6 +218,6 @@ def draw_units(frac, ax=None, *, pos=None, title=None, ground=None, linkages=Tru
         ax.text(*pos[x], str(x), ha="center", va="center", fontsize=font_size, zorder=4)
     handles = [Patch(color=colors[i], label=f"{u.name} {u.label}") for i, u in enumerate(frac.units)]
     if handles and legend:
-        ax.legend(handles=handles, fontsize=8, loc="upper center", bbox_to_anchor=(0.5, 0.02),
-                  ncols=min(3, len(handles)), frameon=False)
+        ax.legend(handles=handles, fontsize=max(8, font_size - 2), loc="upper center", bbox_to_anchor=(0.5, 0.02),
+                  ncols=min(2, len(handles)), frameon=False)
     return _finish(ax, pos, mech.name if title is None else title)

@@ -112,11 +112,20 @@ def draw_fractionation(mech: Mechanism, axes=None, *, font_size=9):
     return axes_in
 
 
-def draw_ku_catalogue(axes=None, *, variants: bool = False, font_size=8):
-    """The catalogue of kinematic units with up to five links (and their S and D variants)."""
+def draw_ku_catalogue(axes=None, *, variants: bool = False, names=None, font_size=8):
+    """The catalogue of kinematic units with up to five links (and their S and D variants);
+    *names* (such as ``["K3-1", "K4-1", "K4-1S"]``) draws only those entries, in the
+    catalogue's order."""
+    from ..errors import InputError
     from .catalogue import ku_catalogue
 
-    entries = ku_catalogue(variants=variants)
+    entries = ku_catalogue(variants=variants or any("S" in n or "D" in n for n in names or ()))
+    if names is not None:
+        known = {e.name for e in entries}
+        unknown = [n for n in names if n not in known]
+        if unknown:
+            raise InputError(f"no unit {unknown[0]!r} in the catalogue; its names are {', '.join(sorted(known))}")
+        entries = [e for e in entries if e.name in set(names)]
     if axes is None:
         import matplotlib.pyplot as plt
 
