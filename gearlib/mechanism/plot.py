@@ -21,13 +21,9 @@ import textwrap
 import numpy as np
 
 from .._common.matview import polar_text
-from .._common.parse import shown
+from .._common.parse import shown as _show
 from ..errors import DataFormatError
 from ._accept import takes_mechanism
-from .data import Mechanism
-from .graph import to_networkx
-
-from .._common.matview import polar_text
 from .data import Mechanism
 from .graph import to_networkx
 
@@ -55,7 +51,7 @@ def style():
 def _axes(ax, figsize=(5.0, 4.0)):
     if ax is not None:
         if not (hasattr(ax, "add_artist") and hasattr(ax, "figure")):
-            raise DataFormatError(f"ax: expected matplotlib Axes (fig, ax = plt.subplots()) or None, got {shown(ax)}")
+            raise DataFormatError(f"ax: expected matplotlib Axes (fig, ax = plt.subplots()) or None, got {_show(ax)}")
         return ax
     import matplotlib.pyplot as plt
 
@@ -245,7 +241,7 @@ def plot_speeds(solution, ax=None, *, links=None, title=None, unit="rad/s"):
     """
     if not hasattr(solution, "as_complex"):
         hint = " (solve first: gl.speeds(mech, ground=..., inputs={...}))" if isinstance(solution, Mechanism) else ""
-        raise DataFormatError(f"solution: expected the result of gl.speeds(...), got {shown(solution)}{hint}")
+        raise DataFormatError(f"solution: expected the result of gl.speeds(...), got {_show(solution)}{hint}")
     ax = _axes(ax, figsize=(6.0, 3.2))
     mech = solution.mechanism
     ground = solution.constraints.ground
