@@ -99,9 +99,9 @@ def bearing_frequencies(bearing, omega_inner, omega_outer=0.0) -> BearingFrequen
     outer ring at *omega_outer* (both relative to the same link; complex speeds allowed).
 
     >>> brg = gl.Bearing(pitch_diameter=40, ball_diameter=8, balls=9)
-    >>> f = gl.bearing_frequencies(brg, omega_inner=25)
+    >>> f = gl.bearing_frequencies(brg, omega_inner=30)
     >>> f.outer_ring, f.inner_ring, f.ball_spin, f.cage
-    (90.0, 135.0, 60.0, 10.0)
+    (108.0, 162.0, 72.0, 12.0)
     """
     if isinstance(bearing, Mapping):
         bearing = Bearing.from_dict(bearing)

@@ -281,8 +281,8 @@ def speed_ratio_matrix(mech: Mechanism, *, zero_speed=(), normalize_to=(), equal
     --------
     >>> ex1 = gl.catalog.load("penaud_example_1")
     >>> W = gl.speed_ratio_matrix(ex1, zero_speed=[1], normalize_to=[2])
-    >>> [str(gl.direction(w)) for w in W[:, 0]]
-    ['0', '1', '1.36216∠36.5868°', '0.625']
+    >>> [str(gl.direction(w)) for w in W[:3, 0]]  # links 1, 2 and 3
+    ['0', '1', '1.36216∠36.5868°']
     """
     M = adjacency_matrix(mech)
     C = constraint_rows(mech, zero_speed=zero_speed, equal=equal)
