@@ -26,7 +26,7 @@ VENDOR := book/vendor
 VENDOR_STAMP := $(VENDOR)/_static/.staged
 CHROMIUM ?= $(shell command -v chromium || command -v chromium-browser || true)
 
-.PHONY: help venv vendor lint unit notebooks book build-book tex pdf pdf-from-build browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean \
+.PHONY: help venv vendor lint unit notebooks book build-book clean-book tex pdf pdf-from-build browser browser-pages browser-lab book-then-pages chromium test lab bench nbval-repeat strip clean \
 	proxy course course-notebooks course-html course-test course-then-html hub binder-constraints
 
 help:
@@ -110,14 +110,26 @@ notebooks: $(STAMP) $(KERNEL_CONFIG)
 # parallel, one worker per CPU (JB_JOBS=1 for a serial build).
 # A clean build removes everything in book/_build but the screenshots, which the JupyterLab
 # test may be writing meanwhile (make test).
+# The build is skipped when book/_build/.inputs says it was made from these very sources
+# (book/inputs.py: a digest of chapters/, exercises/, book/, gearlib/, course/, the pins and
+# this file); its tests run either way. make clean-book forces a build.
 build-book: $(STAMP) $(KERNEL_CONFIG) $(VENDOR_STAMP)
-	mkdir -p book/_build && find book/_build -mindepth 1 -maxdepth 1 ! -name screenshots -exec rm -rf {} +
-	$(BIN)/python book/build.py . $(JB_FLAGS)
-	@test -f book/_build/html/index.html
+	@digest=$$($(BIN)/python book/inputs.py); \
+	if [ -f book/_build/html/index.html ] && [ "$$digest" = "$$(cat book/_build/.inputs 2>/dev/null)" ]; then \
+		echo "book/_build was built from these sources (book/inputs.py): not built again (make clean-book forces it)"; \
+	else \
+		mkdir -p book/_build && find book/_build -mindepth 1 -maxdepth 1 ! -name screenshots -exec rm -rf {} + && \
+		echo "$(BIN)/python book/build.py . $(JB_FLAGS)" && $(BIN)/python book/build.py . $(JB_FLAGS) && \
+		test -f book/_build/html/index.html && echo "$$digest" > book/_build/.inputs; \
+	fi
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m book tests/test_book.py tests/test_book_reading.py tests/test_exercise_leaks.py
 	@echo "The book is in book/_build/html/index.html"
 
 book: build-book
+
+clean-book:
+	mkdir -p book/_build && find book/_build -mindepth 1 -maxdepth 1 ! -name screenshots -exec rm -rf {} +
+	rm -rf course/_build/html
 
 # The PDF: Sphinx's LaTeX builder on a copy of the environment the HTML build left in
 # book/_build/.doctrees (it reads and executes nothing again: "0 changed"; a copy, because
@@ -146,10 +158,15 @@ tex:
 # after build-book (or make book), without building the HTML again
 pdf-from-build: $(STAMP) tex
 	@test -f book/_build/.doctrees/environment.pickle || { echo "no built book: run make book first"; exit 1; }
-	rm -rf book/_build/.doctrees-latex && cp -R book/_build/.doctrees book/_build/.doctrees-latex
-	JB_DOCTREES=book/_build/.doctrees-latex $(BIN)/python book/build.py . $(JB_FLAGS) --builder latex
-	$(MAKE) --no-print-directory -C $(LATEX_DIR) all-pdf LATEXMKOPTS="-xelatex -silent" \
-		LATEXOPTS="-interaction=nonstopmode -halt-on-error -file-line-error"
+	@if [ -f $(LATEX_DIR)/book.pdf ] && [ -f book/_build/.inputs ] && cmp -s book/_build/.inputs $(LATEX_DIR)/.inputs; then \
+		echo "$(LATEX_DIR)/book.pdf was made from this build of the book: not made again"; \
+	else \
+		rm -rf book/_build/.doctrees-latex $(LATEX_DIR) && cp -R book/_build/.doctrees book/_build/.doctrees-latex && \
+		JB_DOCTREES=book/_build/.doctrees-latex $(BIN)/python book/build.py . $(JB_FLAGS) --builder latex && \
+		$(MAKE) --no-print-directory -C $(LATEX_DIR) all-pdf LATEXMKOPTS="-xelatex -silent" \
+			LATEXOPTS="-interaction=nonstopmode -halt-on-error -file-line-error" && \
+		{ cp book/_build/.inputs $(LATEX_DIR)/.inputs 2>/dev/null || true; }; \
+	fi
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m pdf tests/test_pdf.py
 	@echo "The PDF is in $(LATEX_DIR)/book.pdf"
 
@@ -236,7 +253,11 @@ course-notebooks: $(STAMP)
 
 course-html: $(STAMP) $(VENDOR_STAMP)
 	@test -d book/_build/jupyter_execute || $(MAKE) --no-print-directory build-book
-	$(BIN)/python -m course.build html
+	@if [ -f course/_build/html/index.html ] && [ -f book/_build/.inputs ] && cmp -s book/_build/.inputs course/_build/html/.inputs; then \
+		echo "course/_build/html was made from this build of the book: not made again"; \
+	else \
+		$(BIN)/python -m course.build html && { cp book/_build/.inputs course/_build/html/.inputs 2>/dev/null || true; }; \
+	fi
 	$(BIN)/python -m pytest -q -p no:cacheprovider -m course_html tests/test_course_html.py
 
 course: course-notebooks course-html
