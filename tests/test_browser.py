@@ -164,7 +164,7 @@ def page():
 
 def inspect(page, url: str, *, widget_timeout: float = 30) -> tuple[list[str], dict]:
     """Open ``url`` and list what a reader would find wrong there; also return what was seen."""
-    page.goto(url)
+    page.goto(url, timeout=90)  # the API page (1.2 MB) took over 30 s beside three other test chains
     page.wait_for(WIDGETS_RENDERED, timeout=widget_timeout)  # a widget that never renders is reported below
     seen = page.evaluate(INSPECT, timeout=60)
     remote = sorted({u for u in page.requests if urlsplit(u).scheme not in LOCAL_SCHEMES})
