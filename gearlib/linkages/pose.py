@@ -50,6 +50,14 @@ def _basis(a) -> tuple:
     return u, np.cross(a, u)
 
 
+def _perpendicular(out, g, a, b):
+    """The rows of a ⟂ b (a fixed in link g["t"], b in link g["h"], one joint per row of a and
+    b): the residual a . b and its derivatives, rotations only, for both links."""
+    zero = np.zeros_like(a)
+    out.append((np.einsum("ja,ja->j", a, b), g["t"], np.hstack([_cross(a, b), zero]), g["h"],
+                np.hstack([_cross(b, a), zero]), g["names"]))
+
+
 def _cross(a, b):
     """Row-wise cross products of two ``(m, 3)`` arrays (faster than np.cross on small arrays)."""
     return np.stack([a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
@@ -180,28 +188,19 @@ class _System:
         if self.planar:
             g = self.groups.get("planar_prismatic")
             if g is not None:
-                da = np.einsum("jab,jb->ja", R[g["t"]], g["a"])
-                dn = np.einsum("jab,jb->ja", R[g["h"]], g["n"])
-                zero = np.zeros_like(da)
-                out.append((np.einsum("ja,ja->j", da, dn), g["t"], np.hstack([_cross(da, dn), zero]), g["h"],
-                            np.hstack([_cross(dn, da), zero]), g["names"]))
+                _perpendicular(out, g, np.einsum("jab,jb->ja", R[g["t"]], g["a"]),
+                               np.einsum("jab,jb->ja", R[g["h"]], g["n"]))
                 self._line(out, g, R, P, [np.einsum("jab,jb->ja", R[g["t"]], g["n"])])
             return out
         g = self.groups.get("parallel")
         if g is not None:
             da = np.einsum("jab,jb->ja", R[g["t"]], g["a"])
-            zero = np.zeros_like(da)
             for key in ("u", "w"):
-                e = np.einsum("jab,jb->ja", R[g["h"]], g[key])
-                out.append((np.einsum("ja,ja->j", da, e), g["t"], np.hstack([_cross(da, e), zero]), g["h"],
-                            np.hstack([_cross(e, da), zero]), g["names"]))
+                _perpendicular(out, g, da, np.einsum("jab,jb->ja", R[g["h"]], g[key]))
         g = self.groups.get("lock")
         if g is not None:
-            e1 = np.einsum("jab,jb->ja", R[g["t"]], g["u"])
-            e2 = np.einsum("jab,jb->ja", R[g["h"]], g["w"])
-            zero = np.zeros_like(e1)
-            out.append((np.einsum("ja,ja->j", e1, e2), g["t"], np.hstack([_cross(e1, e2), zero]), g["h"],
-                        np.hstack([_cross(e2, e1), zero]), g["names"]))
+            _perpendicular(out, g, np.einsum("jab,jb->ja", R[g["t"]], g["u"]),
+                           np.einsum("jab,jb->ja", R[g["h"]], g["w"]))
         g = self.groups.get("line")
         if g is not None:
             self._line(out, g, R, P, [np.einsum("jab,jb->ja", R[g["t"]], g[k]) for k in ("u", "w")])
