@@ -162,6 +162,12 @@ def linkage_design_crank(stroke, longest, target, mu):
 
 
 # ----------------------------------------------------------------------------- 7.6, 7.7, 7.12
+def _asked(lead: str, choice: Choice) -> str:
+    """A multiple-choice question: its lead, then the options as the choice lists them,
+    ``(A) ...; (B) ....``, so that the statement and the check cannot drift apart."""
+    return lead + " " + "; ".join(f"({key}) {text}" for key, text in choice.options.items()) + "."
+
+
 _PLACE = Choice({
     "A": "the moments of the vertical forces at C and D cancel: D carries no torque and only mode 1 can occur",
     "B": "the circuit matrix then has only ones",
@@ -176,10 +182,8 @@ _PLACE = Choice({
 
 @register(
     "linkage_concept_place", exercise="7.6", title="Why the thesis puts D at C", stars=1, minutes=5, kind="concept",
-    question="The thesis places the slider's prismatic coupling D at the same point as the revolute C. Why? "
-             "(A) the moments of the vertical forces at C and D cancel: D carries no torque and only mode 1 can "
-             "occur; (B) the circuit matrix then has only ones; (C) the friction force at D must pass through the "
-             "pin C to do any work; (D) the slider-crank would otherwise have two degrees of freedom.",
+    question=_asked("The thesis places the slider's prismatic coupling D at the same point as the revolute C. Why?",
+                    _PLACE),
     answer=_PLACE,
 )
 def linkage_concept_place():
@@ -201,10 +205,8 @@ _ANNULI = Choice({
 @register(
     "linkage_concept_annuli", exercise="7.7", title="One square and one round annulus", stars=1, minutes=5,
     kind="concept",
-    question="Each prismatic pair of the 3-UPU is split into a square annulus and a round one. Why not two square "
-             "annuli? (A) two square annuli would lock an undetermined torque about the axis in the loop they "
-             "close; (B) a square annulus cannot carry the actuator's force; (C) two square annuli would let the "
-             "rod turn about its axis; (D) Coulomb friction does not apply to a square annulus.",
+    question=_asked("Each prismatic pair of the 3-UPU is split into a square annulus and a round one. Why not two "
+                    "square annuli?", _ANNULI),
     answer=_ANNULI,
 )
 def linkage_concept_annuli():
@@ -226,11 +228,8 @@ _TORQUES = Choice({
 @register(
     "linkage_concept_torques", exercise="7.12", title="Why one coupling per prismatic pair is too optimistic",
     stars=2, minutes=10, kind="concept",
-    question="Modelling each prismatic pair of the 3-UPU by one coupling, with friction from the forces it "
-             "transmits, gives an efficiency close to 1 for the lift. Why is that too optimistic? (A) it leaves out "
-             "the normal forces that the pair's transmitted torques cause at its two bushings; (B) it puts the "
-             "prismatic coupling at the wrong place on the limb; (C) it leaves out the friction in the universal "
-             "joints; (D) it has fewer signs to find.",
+    question=_asked("Modelling each prismatic pair of the 3-UPU by one coupling, with friction from the forces it "
+                    "transmits, gives an efficiency close to 1 for the lift. Why is that too optimistic?", _TORQUES),
     answer=_TORQUES,
 )
 def linkage_concept_torques():
