@@ -96,7 +96,7 @@ lint: $(STAMP)
 # The browser tests' modules list the built pages when collected: left out here, so that
 # `make test` can run this beside a book build that is rewriting book/_build.
 unit: $(STAMP)
-	MPLBACKEND=Agg $(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 \
+	MPLBACKEND=Agg $(BIN)/python -m pytest -q -p no:cacheprovider tests gearlib --doctest-modules -n 2 --dist worksteal \
 		-m "not book and not browser and not pdf and not course and not course_html" \
 		--ignore=tests/test_browser.py --ignore=tests/test_lab.py
 

@@ -112,6 +112,24 @@ def test_one_turn_of_an_offset_slider_crank_drawn_anywhere(deg):
     assert abs(res.efficiency - out / (2 * math.pi)) < 1e-9
 
 
+def test_a_sign_change_is_found_at_a_zero_at_a_pole_and_where_nothing_can_be_solved():
+    """The refinement of kinks (gearlib.linkages.rating._sign_change) finds where a function
+    changes sign to the tolerance: cos at pi/2, tan at its pole pi/2 (a force through infinity
+    at a dead centre), and the instant at which the function cannot be evaluated at all."""
+    from gearlib.linkages.rating import _sign_change
+
+    assert abs(_sign_change(math.cos, 1.0, 2.0, 1e-12) - math.pi / 2) < 1e-11
+    assert abs(_sign_change(lambda t: math.tan(t) * 1e3, 1.4, 1.65, 1e-12) - math.pi / 2) < 1e-11
+    assert abs(_sign_change(lambda t: -1.0 / (t - 0.3) ** 3, 0.0, 1.0, 1e-12) - 0.3) < 1e-11
+
+    def dead(t):
+        if abs(t - 0.25) < 1e-3:
+            raise gl.GeometryError("no pose here")
+        return 1.0 / (t - 0.25)
+
+    assert abs(_sign_change(dead, 0.0, 1.0, 1e-12) - 0.25) < 1e-3
+
+
 def test_poses_from_a_position_function_give_the_same_rating():
     """The slider-crank's frames in closed form (eq. 97) instead of the pose solver: the crank
     turned by theta, the coupler by -asin(a1 sin theta / a2) about B, the slider slid along x."""
