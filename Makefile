@@ -15,6 +15,10 @@ STAMP := $(VENV)/.installed
 # notebooks find the kernel installed into .venv, not one of the user's
 export JUPYTER_PREFER_ENV_PATH := 1
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
+# Python caches the bytecode of what it compiles (gearlib, the tests, pytest's rewritten
+# asserts) in __pycache__ (ignored by git and by book/inputs.py), as it does by default: an
+# environment that turns this off makes every kernel, worker and command compile it all again
+unexport PYTHONDONTWRITEBYTECODE
 
 NOTEBOOKS := chapters exercises book/solutions book/lecturers.ipynb
 LINTED := gearlib tests chapters exercises book benchmarks course

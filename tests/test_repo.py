@@ -126,3 +126,36 @@ def test_every_function_a_chapter_calls_is_on_the_api_page():
                 if m.group(1).rsplit(".", 1)[-1] not in documented:
                     missing.setdefault(f"gl.{m.group(1)}", set()).add(p.stem)
     assert not missing, f"called in a chapter, not on book/api.md: {missing}"
+
+
+def test_every_package_gearlib_imports_is_a_declared_dependency():
+    """``pip install .`` brings what the library imports: every third-party module imported
+    anywhere in gearlib/ (its pytest configuration, conftest.py, aside) belongs to a
+    distribution named in pyproject's dependencies, and each one named is imported."""
+    import ast
+    import re
+    import tomllib
+    from importlib.metadata import packages_distributions
+
+    imported = set()
+    for path in (ROOT / "gearlib").rglob("*.py"):
+        if path.name == "conftest.py":
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                imported |= {a.name.split(".")[0] for a in node.names}
+            elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+                imported.add(node.module.split(".")[0])
+    third = imported - set(sys.stdlib_module_names) - {"gearlib", "__future__"}
+
+    def norm(name):
+        return re.sub(r"[-_.]+", "-", name).lower()
+
+    declared = {norm(re.split(r"[<>=!~\[; ]", d)[0])
+                for d in tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["dependencies"]}
+    owners = packages_distributions()
+    needed = {m: {norm(d) for d in owners.get(m, [m])} for m in third}
+    missing = sorted(m for m, dists in needed.items() if not dists & declared)
+    assert not missing, f"gearlib imports {missing}: add them to pyproject's dependencies"
+    unused = declared - {d for dists in needed.values() for d in dists}
+    assert not unused, f"pyproject declares {sorted(unused)}, which gearlib never imports"
